@@ -1,0 +1,11 @@
+// TinyParticle: a small particle physics engine for 8-bit microcontrollers.
+// This header declares everything inside namespace tinyparticle; sketches
+// usually include <TinyParticle.h>, which also imports the namespace.
+#pragma once
+
+#include "TinyParticle/Configuration.hpp"
+#include "TinyParticle/Math/MathErrors.hpp"
+#include "TinyParticle/Math/Fixed.hpp"
+#include "TinyParticle/Math/FixedMath.hpp"
+#include "TinyParticle/Math/Float.hpp"
+#include "TinyParticle/Math/Vec.hpp"

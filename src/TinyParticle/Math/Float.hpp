@@ -1,0 +1,92 @@
+// Float: a float with the same interface as Fixed, so that the engine is
+// written once as a template over its scalar. It is a thin layer over the
+// compiler's float (avr-libc's emulation on AVR).
+//
+// Differences from plain float, kept so that both scalars behave alike:
+// - x / 0 returns max() or lowest() with x's sign (0 / 0 returns 0) and
+//   raises MathError::kDivideByZero, instead of producing inf or NaN.
+// - sqrt(x < 0) returns 0 and raises MathError::kNegativeSqrt.
+// Other overflow follows IEEE 754 (inf) and raises nothing.
+#pragma once
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+
+#include "MathErrors.hpp"
+
+namespace tinyparticle {
+
+class Float {
+ public:
+  constexpr Float() : mValue(0.0f) {}
+  constexpr explicit Float(int v) : mValue(float(v)) {}
+  constexpr explicit Float(long v) : mValue(float(v)) {}
+  constexpr explicit Float(long long v) : mValue(float(v)) {}
+  constexpr explicit Float(unsigned v) : mValue(float(v)) {}
+  constexpr explicit Float(unsigned long v) : mValue(float(v)) {}
+  constexpr explicit Float(double v) : mValue(float(v)) {}
+
+  constexpr float toFloat() const { return mValue; }
+  // Rounds toward zero; saturates outside int32_t's range; NaN gives 0.
+  constexpr int32_t toInt() const {
+    return mValue != mValue ? 0
+         : mValue >= 2147483648.0f ? INT32_MAX
+         : mValue <= -2147483648.0f ? INT32_MIN
+         : int32_t(mValue);
+  }
+
+  static constexpr Float max() { return Float(FLT_MAX); }
+  static constexpr Float lowest() { return Float(-FLT_MAX); }
+  // The smallest positive normal float.
+  static constexpr Float epsilon() { return Float(FLT_MIN); }
+  static constexpr Float pi() { return Float(3.14159265358979323846); }
+
+  Float operator+(Float b) const { return Float(mValue + b.mValue); }
+  Float operator-(Float b) const { return Float(mValue - b.mValue); }
+  Float operator*(Float b) const { return Float(mValue * b.mValue); }
+  Float operator/(Float b) const {
+    if (b.mValue == 0.0f) {
+      detail::raiseMathError(MathError::kDivideByZero);
+      return mValue > 0.0f ? max() : (mValue < 0.0f ? lowest() : Float());
+    }
+    return Float(mValue / b.mValue);
+  }
+  Float operator-() const { return Float(-mValue); }
+  Float& operator+=(Float b) { return *this = *this + b; }
+  Float& operator-=(Float b) { return *this = *this - b; }
+  Float& operator*=(Float b) { return *this = *this * b; }
+  Float& operator/=(Float b) { return *this = *this / b; }
+
+  constexpr bool operator==(Float b) const { return mValue == b.mValue; }
+  constexpr bool operator!=(Float b) const { return mValue != b.mValue; }
+  constexpr bool operator<(Float b) const { return mValue < b.mValue; }
+  constexpr bool operator<=(Float b) const { return mValue <= b.mValue; }
+  constexpr bool operator>(Float b) const { return mValue > b.mValue; }
+  constexpr bool operator>=(Float b) const { return mValue >= b.mValue; }
+
+ private:
+  float mValue;
+};
+
+inline Float fabs(Float x) { return Float(::fabsf(x.toFloat())); }
+inline Float fmin(Float a, Float b) { return b < a ? b : a; }
+inline Float fmax(Float a, Float b) { return a < b ? b : a; }
+inline Float clamp(Float x, Float lo, Float hi) {
+  return x < lo ? lo : (hi < x ? hi : x);
+}
+
+inline Float sqrt(Float x) {
+  if (x < Float()) {
+    detail::raiseMathError(MathError::kNegativeSqrt);
+    return Float();
+  }
+  return Float(::sqrtf(x.toFloat()));
+}
+inline Float atan2(Float y, Float x) {
+  return Float(::atan2f(y.toFloat(), x.toFloat()));
+}
+inline Float sin(Float x) { return Float(::sinf(x.toFloat())); }
+inline Float cos(Float x) { return Float(::cosf(x.toFloat())); }
+
+}  // namespace tinyparticle
