@@ -1,0 +1,61 @@
+# TinyParticle: build, test and run everything on a simulated Arduino Nano.
+#
+#   make demo     build an example for the Nano and run it in simavr
+#   make test     every check, host test, target test and example build
+#
+# More in README.md ("Commands"). Each target first checks its Debian packages
+# (extras/scripts/setup-packages): as root it installs what is missing,
+# otherwise it prints the apt-get line to run.
+
+SCRIPTS := extras/scripts
+DEMO_SECONDS ?= 8
+JOBS ?= 2
+# The demo example: BouncingBalls once it exists, else the minimal Hello.
+DEMO ?= $(firstword $(wildcard examples/BouncingBalls) examples/Hello)
+
+.PHONY: help setup demo test test-host test-target checks sizes bench clean
+
+help:
+	@sed -n '3,4p' Makefile | sed 's/^# *//'
+	@echo "More commands: see README.md"
+
+setup:
+	@$(SCRIPTS)/setup-packages all
+
+# Builds $(DEMO) and shows its Serial output live; simavr is stopped after
+# DEMO_SECONDS seconds of wall time (the usual way a demo ends).
+demo:
+	@$(SCRIPTS)/setup-packages demo
+	@elf=$$($(SCRIPTS)/nano-build $(DEMO) build/nano/$(DEMO)) && \
+	echo "Running $(DEMO) on a simulated ATmega328P for $(DEMO_SECONDS) s (Ctrl-C stops it)" && \
+	$(SCRIPTS)/simavr-run "$$elf" --timeout $(DEMO_SECONDS) --timeout-ok --ansi
+
+test:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/run-tests --jobs $(JOBS)
+
+test-host:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/run-tests --jobs $(JOBS) --only host
+
+test-target:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/run-tests --jobs $(JOBS) --only target
+
+checks:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/run-tests --jobs $(JOBS) --only checks
+
+sizes:
+	@$(SCRIPTS)/setup-packages demo
+	@$(SCRIPTS)/run-tests --jobs $(JOBS) --only examples
+
+# Benchmarks live in extras/benchmarks (their Makefile does the work).
+bench:
+	@$(SCRIPTS)/setup-packages bench
+	@if [ -f extras/benchmarks/Makefile ]; then $(MAKE) --no-print-directory -C extras/benchmarks; \
+	else echo "bench: extras/benchmarks/Makefile does not exist yet"; exit 1; fi
+
+clean:
+	rm -rf build
+	@$(MAKE) --no-print-directory -C test clean
