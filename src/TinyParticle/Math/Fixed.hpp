@@ -1,23 +1,65 @@
 // Fixed<IntBits, FracBits>: a binary fixed-point number.
 //
 // The storage follows from the format: 16 bits in all -> int16_t,
-// 32 bits in all -> int32_t. IntBits counts the sign bit.
+// 32 bits in all -> int32_t. IntBits counts the sign bit, so Q16_16 holds
+// [-32768, 32768) in steps of 2^-16.
 //
 // Rules every operation keeps:
-// - + - * / round to nearest (ties away from zero) and saturate: a result
-//   that does not fit becomes max() or lowest() and raises
-//   MathError::kOverflow. There is no signed overflow and no shift of a
-//   negative value anywhere, so there is no undefined behaviour.
+// - + - * / round to nearest, ties away from zero, so that (-a) * b is
+//   exactly -(a * b) and a mirror-symmetric scene stays symmetric.
+// - A result that does not fit saturates: it becomes max() or lowest() and
+//   raises MathError::kOverflow (see MathErrors.hpp). There is no signed
+//   overflow and no shift of a negative value anywhere, so there is no
+//   undefined behaviour, whatever the operands.
 // - x / 0 returns max() or lowest() with x's sign (0 / 0 returns 0) and
 //   raises MathError::kDivideByZero.
 // - Construction from an integer or a decimal literal is constexpr, so
-//   Q16_16(0.15) costs nothing at run time. Out-of-range values saturate.
+//   Q16_16(0.15) costs nothing at run time. Out-of-range values saturate
+//   (without raising the flag: a constant is checked by its author).
+//   On AVR a double is a float (24-bit mantissa), so a literal with more
+//   significant digits than that is rounded before it reaches Fixed; use
+//   fromRaw() when the last bit matters.
+//
+// Speed: multiply, divide and square root go through detail::FixedFast,
+// which uses hand-written AVR code where TINYPARTICLE_AVR_ASM is 1 (see
+// FixedAvr.hpp) and the portable reference* functions everywhere else. The
+// reference functions stay callable on every target so that tests can
+// compare the two.
 #pragma once
 
 #include <stdint.h>
 
 #include "../Configuration.hpp"
 #include "MathErrors.hpp"
+
+// The operators are one-line wrappers around the raw functions; at -Os
+// avr-gcc would otherwise call them out of line and pass the object
+// through memory, which costs more than the arithmetic itself.
+#if defined(__GNUC__)
+#define TINYPARTICLE_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define TINYPARTICLE_ALWAYS_INLINE inline
+#endif
+
+// The hand-written AVR code in use: the add/subtract below need any AVR,
+// FixedAvr.hpp (multiply, divide, square root, atan2) one with MUL.
+#if TINYPARTICLE_AVR_ASM && defined(__AVR__)
+#define TINYPARTICLE_AVR_ASM_ADD 1
+#else
+#define TINYPARTICLE_AVR_ASM_ADD 0
+#endif
+#if TINYPARTICLE_AVR_ASM && defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+#define TINYPARTICLE_AVR_ASM_MUL 1
+#else
+#define TINYPARTICLE_AVR_ASM_MUL 0
+#endif
+
+// __builtin_add_overflow and friends: GCC 5 and later, clang.
+#if defined(__clang__) || (defined(__GNUC__) && __GNUC__ >= 5)
+#define TINYPARTICLE_HAS_OVERFLOW_BUILTINS 1
+#else
+#define TINYPARTICLE_HAS_OVERFLOW_BUILTINS 0
+#endif
 
 namespace tinyparticle {
 
@@ -42,6 +84,80 @@ struct FixedStorage<32> {
   static const Raw kMax = INT32_MAX;
 };
 
+// Wrapping add and subtract that report signed overflow. On AVR the
+// overflow flag of the last add/sub instruction says it directly; the
+// compiler's builtins would compare the operands instead (about 3 times
+// slower with avr-gcc 5.4).
+#if TINYPARTICLE_AVR_ASM_ADD
+TINYPARTICLE_ALWAYS_INLINE bool addOverflows(int32_t& a, int32_t b) {
+  uint8_t v;
+  asm("clr  %1\n\t"
+      "add  %A0, %A2\n\t"
+      "adc  %B0, %B2\n\t"
+      "adc  %C0, %C2\n\t"
+      "adc  %D0, %D2\n\t"
+      "brvc 1f\n\t"
+      "inc  %1\n"
+      "1:"
+      : "+r"(a), "=&r"(v)
+      : "r"(b));
+  return v != 0;
+}
+TINYPARTICLE_ALWAYS_INLINE bool subtractOverflows(int32_t& a, int32_t b) {
+  uint8_t v;
+  asm("clr  %1\n\t"
+      "sub  %A0, %A2\n\t"
+      "sbc  %B0, %B2\n\t"
+      "sbc  %C0, %C2\n\t"
+      "sbc  %D0, %D2\n\t"
+      "brvc 1f\n\t"
+      "inc  %1\n"
+      "1:"
+      : "+r"(a), "=&r"(v)
+      : "r"(b));
+  return v != 0;
+}
+TINYPARTICLE_ALWAYS_INLINE bool addOverflows(int16_t& a, int16_t b) {
+  uint8_t v;
+  asm("clr  %1\n\t"
+      "add  %A0, %A2\n\t"
+      "adc  %B0, %B2\n\t"
+      "brvc 1f\n\t"
+      "inc  %1\n"
+      "1:"
+      : "+r"(a), "=&r"(v)
+      : "r"(b));
+  return v != 0;
+}
+TINYPARTICLE_ALWAYS_INLINE bool subtractOverflows(int16_t& a, int16_t b) {
+  uint8_t v;
+  asm("clr  %1\n\t"
+      "sub  %A0, %A2\n\t"
+      "sbc  %B0, %B2\n\t"
+      "brvc 1f\n\t"
+      "inc  %1\n"
+      "1:"
+      : "+r"(a), "=&r"(v)
+      : "r"(b));
+  return v != 0;
+}
+#elif TINYPARTICLE_HAS_OVERFLOW_BUILTINS
+template <typename Raw>
+TINYPARTICLE_ALWAYS_INLINE bool addOverflows(Raw& a, Raw b) {
+  return __builtin_add_overflow(a, b, &a);
+}
+template <typename Raw>
+TINYPARTICLE_ALWAYS_INLINE bool subtractOverflows(Raw& a, Raw b) {
+  return __builtin_sub_overflow(a, b, &a);
+}
+#endif
+
+// The raw multiply, divide and square root actually used. The primary
+// template (after class Fixed) forwards to the portable reference code;
+// FixedAvr.hpp specializes it for the formats it speeds up.
+template <uint8_t IntBits, uint8_t FracBits>
+struct FixedFast;
+
 }  // namespace detail
 
 template <uint8_t IntBits, uint8_t FracBits>
@@ -59,6 +175,7 @@ class Fixed {
 
   static const uint8_t kIntBits = IntBits;
   static const uint8_t kFracBits = FracBits;
+  static const uint8_t kTotalBits = IntBits + FracBits;
   static const Raw kRawMax = Storage::kMax;
   static const Raw kRawMin = -Storage::kMax - 1;
   static const Raw kRawOne = Raw(1) << FracBits;
@@ -69,6 +186,7 @@ class Fixed {
   constexpr explicit Fixed(long long v) : mRaw(fromSigned(v)) {}
   constexpr explicit Fixed(unsigned v) : mRaw(fromUnsigned(v)) {}
   constexpr explicit Fixed(unsigned long v) : mRaw(fromUnsigned(v)) {}
+  constexpr explicit Fixed(unsigned long long v) : mRaw(fromUnsigned(v)) {}
   constexpr explicit Fixed(double v) : mRaw(fromDouble(v)) {}
 
   // The value whose representation is `raw`, i.e. raw / 2^FracBits.
@@ -77,22 +195,31 @@ class Fixed {
 
   constexpr float toFloat() const { return float(mRaw) * (1.0f / kScale); }
   // Rounds toward zero, like a cast from float to int.
-  constexpr int32_t toInt() const { return int32_t(mRaw / kRawOne); }
+  constexpr int32_t toInt() const {
+    return mRaw >= 0 ? int32_t(mRaw >> FracBits)
+                     : -int32_t(magnitude(mRaw) >> FracBits);
+  }
 
-  static constexpr Fixed max() { return fromRaw(kRawMax); }
+  // The largest value. Arduino.h defines max(a, b) as a macro, so a sketch
+  // writes (Q16_16::max)() or Q16_16::largest(); library code uses (S::max)().
+  static constexpr Fixed(max)() { return fromRaw(kRawMax); }
+  static constexpr Fixed largest() { return fromRaw(kRawMax); }
+  // The most negative value.
   static constexpr Fixed lowest() { return fromRaw(kRawMin); }
+  // The smallest positive value, one step of the format.
   static constexpr Fixed epsilon() { return fromRaw(1); }
-  static constexpr Fixed pi() { return Fixed(3.14159265358979323846); }
+  // pi rounded to the format (max() where pi does not fit).
+  static constexpr Fixed pi() { return fromRaw(piRaw()); }
 
-  Fixed operator+(Fixed b) const { return fromRaw(add(mRaw, b.mRaw)); }
-  Fixed operator-(Fixed b) const { return fromRaw(subtract(mRaw, b.mRaw)); }
-  Fixed operator*(Fixed b) const { return fromRaw(multiply(mRaw, b.mRaw)); }
-  Fixed operator/(Fixed b) const { return fromRaw(divide(mRaw, b.mRaw)); }
-  Fixed operator-() const { return fromRaw(subtract(0, mRaw)); }
-  Fixed& operator+=(Fixed b) { return *this = *this + b; }
-  Fixed& operator-=(Fixed b) { return *this = *this - b; }
-  Fixed& operator*=(Fixed b) { return *this = *this * b; }
-  Fixed& operator/=(Fixed b) { return *this = *this / b; }
+  TINYPARTICLE_ALWAYS_INLINE Fixed operator+(Fixed b) const { return fromRaw(add(mRaw, b.mRaw)); }
+  TINYPARTICLE_ALWAYS_INLINE Fixed operator-(Fixed b) const { return fromRaw(subtract(mRaw, b.mRaw)); }
+  TINYPARTICLE_ALWAYS_INLINE Fixed operator*(Fixed b) const { return fromRaw(multiply(mRaw, b.mRaw)); }
+  TINYPARTICLE_ALWAYS_INLINE Fixed operator/(Fixed b) const { return fromRaw(divide(mRaw, b.mRaw)); }
+  TINYPARTICLE_ALWAYS_INLINE Fixed operator-() const { return fromRaw(subtract(0, mRaw)); }
+  TINYPARTICLE_ALWAYS_INLINE Fixed& operator+=(Fixed b) { return *this = *this + b; }
+  TINYPARTICLE_ALWAYS_INLINE Fixed& operator-=(Fixed b) { return *this = *this - b; }
+  TINYPARTICLE_ALWAYS_INLINE Fixed& operator*=(Fixed b) { return *this = *this * b; }
+  TINYPARTICLE_ALWAYS_INLINE Fixed& operator/=(Fixed b) { return *this = *this / b; }
 
   constexpr bool operator==(Fixed b) const { return mRaw == b.mRaw; }
   constexpr bool operator!=(Fixed b) const { return mRaw != b.mRaw; }
@@ -101,36 +228,89 @@ class Fixed {
   constexpr bool operator>(Fixed b) const { return mRaw > b.mRaw; }
   constexpr bool operator>=(Fixed b) const { return mRaw >= b.mRaw; }
 
-  // The raw operations, portable C++. They are the reference for any
-  // faster platform code and are tested against exact arithmetic.
-  static Raw add(Raw a, Raw b) {
+  // ---- Raw operations -----------------------------------------------------
+  // On representations; they saturate and raise flags like the operators.
+
+  TINYPARTICLE_ALWAYS_INLINE static Raw add(Raw a, Raw b) {
+#if TINYPARTICLE_AVR_ASM_ADD || TINYPARTICLE_HAS_OVERFLOW_BUILTINS
+    // Defined for every input (no signed overflow in C++ terms).
+    // After an overflow the wrapped sum has the wrong sign: saturate
+    // toward the other one (a itself need not be kept).
+    Raw sum = a;
+    if (detail::addOverflows(sum, b)) return overflowAgainstSignOf(sum);
+    return sum;
+#else
     Raw sum = toSigned(URaw(URaw(a) + URaw(b)));
     // Overflow only when a and b share a sign that the sum lacks.
     if (((a ^ sum) & (b ^ sum)) < 0) return overflow(a < 0);
     return sum;
+#endif
   }
 
-  static Raw subtract(Raw a, Raw b) {
+  TINYPARTICLE_ALWAYS_INLINE static Raw subtract(Raw a, Raw b) {
+#if TINYPARTICLE_AVR_ASM_ADD || TINYPARTICLE_HAS_OVERFLOW_BUILTINS
+    Raw difference = a;
+    if (detail::subtractOverflows(difference, b)) {
+      return overflowAgainstSignOf(difference);
+    }
+    return difference;
+#else
     Raw difference = toSigned(URaw(URaw(a) - URaw(b)));
     if (((a ^ b) & (a ^ difference)) < 0) return overflow(a < 0);
     return difference;
+#endif
   }
 
-  static Raw multiply(Raw a, Raw b) {
+  // The fastest correct code for this target (FixedFast).
+  TINYPARTICLE_ALWAYS_INLINE static Raw multiply(Raw a, Raw b) {
+    return detail::FixedFast<IntBits, FracBits>::multiply(a, b);
+  }
+  TINYPARTICLE_ALWAYS_INLINE static Raw divide(Raw a, Raw b) {
+    if (b == 0) return divideByZero(a);
+    return detail::FixedFast<IntBits, FracBits>::divide(a, b);
+  }
+  // round(sqrt(x)); x < 0 gives 0 and raises MathError::kNegativeSqrt.
+  TINYPARTICLE_ALWAYS_INLINE static Raw squareRoot(Raw x) {
+    if (x < 0) return negativeSqrt();
+    return detail::FixedFast<IntBits, FracBits>::squareRoot(x);
+  }
+
+  // The portable C++ versions: exact, simple, slow on 8-bit CPUs. They are
+  // the reference in the tests, on every target.
+  static Raw referenceMultiply(Raw a, Raw b) {
     UWide product = UWide(magnitude(a)) * magnitude(b);
     UWide rounded = (product + (UWide(1) << (FracBits - 1))) >> FracBits;
     return fromMagnitude(rounded, (a < 0) != (b < 0));
   }
 
-  static Raw divide(Raw a, Raw b) {
-    if (b == 0) {
-      detail::raiseMathError(MathError::kDivideByZero);
-      return a > 0 ? kRawMax : (a < 0 ? kRawMin : 0);
-    }
+  static Raw referenceDivide(Raw a, Raw b) {
+    if (b == 0) return divideByZero(a);
     UWide numerator = UWide(magnitude(a)) << FracBits;
     UWide divisor = magnitude(b);
+    // Rounds up when twice the remainder reaches the divisor.
     UWide quotient = (numerator + divisor / 2) / divisor;
     return fromMagnitude(quotient, (a < 0) != (b < 0));
+  }
+
+  static Raw referenceSquareRoot(Raw x) {
+    if (x < 0) return negativeSqrt();
+    // sqrt(raw / 2^F) * 2^F = sqrt(raw * 2^F): an integer square root.
+    UWide n = UWide(URaw(x)) << FracBits;
+    UWide root = 0;
+    UWide bit = UWide(1) << (sizeof(UWide) * 8 - 2);
+    while (bit > n) bit >>= 2;
+    while (bit != 0) {
+      if (n >= root + bit) {
+        n -= root + bit;
+        root = (root >> 1) + bit;
+      } else {
+        root >>= 1;
+      }
+      bit >>= 2;
+    }
+    // n is now the remainder x * 2^F - root^2; past root + 1/2 round up.
+    if (n > root) ++root;
+    return Raw(root);  // at most sqrt(2^(kTotalBits - 1 + F)): it fits
   }
 
   // |raw| as an unsigned number; exact for kRawMin too.
@@ -148,6 +328,22 @@ class Fixed {
     return Raw(m);
   }
 
+  // Saturated result of an overflow; raises MathError::kOverflow.
+  static Raw overflow(bool negative) {
+    detail::raiseMathError(MathError::kOverflow);
+    return negative ? kRawMin : kRawMax;
+  }
+  // The same, out of line (the rare path of + and - then costs no
+  // registers at the call site): max() for wrapped < 0, else lowest().
+  TINYPARTICLE_NOINLINE static Raw overflowAgainstSignOf(Raw wrapped) {
+    return overflow(wrapped >= 0);
+  }
+
+  // Two's-complement reinterpretation without implementation-defined casts.
+  static constexpr Raw toSigned(URaw u) {
+    return u <= URaw(kRawMax) ? Raw(u) : Raw(-Raw(URaw(~u)) - 1);
+  }
+
  private:
   struct RawTag {};
   constexpr Fixed(Raw raw, RawTag) : mRaw(raw) {}
@@ -157,14 +353,13 @@ class Fixed {
   static constexpr long kIntMax = long(kRawMax >> FracBits);
   static constexpr long kIntMin = -kIntMax - 1;
 
-  // Two's-complement reinterpretation without implementation-defined casts.
-  static constexpr Raw toSigned(URaw u) {
-    return u <= URaw(kRawMax) ? Raw(u) : Raw(-Raw(URaw(~u)) - 1);
+  static Raw divideByZero(Raw a) {
+    detail::raiseMathError(MathError::kDivideByZero);
+    return a > 0 ? kRawMax : (a < 0 ? kRawMin : Raw(0));
   }
-
-  static Raw overflow(bool negative) {
-    detail::raiseMathError(MathError::kOverflow);
-    return negative ? kRawMin : kRawMax;
+  static Raw negativeSqrt() {
+    detail::raiseMathError(MathError::kNegativeSqrt);
+    return 0;
   }
 
   // In range, v * 2^FracBits fits Raw, so the product cannot overflow.
@@ -184,11 +379,36 @@ class Fixed {
          : Raw(v >= 0 ? v * kScale + 0.5 : v * kScale - 0.5);
   }
 
+  // round(pi * 2^30), exact in integers, so pi() is right on AVR too where
+  // a double literal has only 24 bits.
+  static constexpr uint32_t kPiQ30 = 0xC90FDAA2ul;
+  static constexpr uint8_t kPiShift = FracBits < 30 ? 30 - FracBits : 1;
+  static constexpr uint32_t kPiRounded =
+      (kPiQ30 >> kPiShift) + ((kPiQ30 >> (kPiShift - 1)) & 1u);
+  static constexpr Raw piRaw() {
+    return FracBits >= 30 || kPiRounded > uint32_t(kRawMax) ? kRawMax
+                                                             : Raw(kPiRounded);
+  }
+
   Raw mRaw;
 };
 
 template <uint8_t I, uint8_t F>
 constexpr double Fixed<I, F>::kScale;
+
+namespace detail {
+// Portable: the reference code is the fast path.
+template <uint8_t IntBits, uint8_t FracBits>
+struct FixedFast {
+  typedef Fixed<IntBits, FracBits> T;
+  typedef typename T::Raw Raw;
+  static Raw multiply(Raw a, Raw b) { return T::referenceMultiply(a, b); }
+  // b != 0 (Fixed::divide handled it).
+  static Raw divide(Raw a, Raw b) { return T::referenceDivide(a, b); }
+  // x >= 0 (Fixed::squareRoot handled it).
+  static Raw squareRoot(Raw x) { return T::referenceSquareRoot(x); }
+};
+}  // namespace detail
 
 // The formats the library names. Q16_16 is the default fixed type.
 typedef Fixed<16, 16> Q16_16;
@@ -197,6 +417,7 @@ typedef Fixed<8, 8> Q8_8;
 
 // abs, min and max are macros in Arduino.h, so these take the C library's
 // floating-point names, which are functions there.
+// fabs(lowest()) saturates to max() and raises MathError::kOverflow.
 template <uint8_t I, uint8_t F>
 inline Fixed<I, F> fabs(Fixed<I, F> x) {
   return x < Fixed<I, F>() ? -x : x;
@@ -210,9 +431,14 @@ inline Fixed<I, F> fmax(Fixed<I, F> a, Fixed<I, F> b) {
   return a < b ? b : a;
 }
 
+// x limited to [lo, hi] (lo <= hi).
 template <uint8_t I, uint8_t F>
 inline Fixed<I, F> clamp(Fixed<I, F> x, Fixed<I, F> lo, Fixed<I, F> hi) {
   return x < lo ? lo : (hi < x ? hi : x);
 }
 
 }  // namespace tinyparticle
+
+#if TINYPARTICLE_AVR_ASM_MUL
+#include "FixedAvr.hpp"
+#endif

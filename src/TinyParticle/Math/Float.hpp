@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "MathErrors.hpp"
+#include "Turns.hpp"
 
 namespace tinyparticle {
 
@@ -25,6 +26,7 @@ class Float {
   constexpr explicit Float(long long v) : mValue(float(v)) {}
   constexpr explicit Float(unsigned v) : mValue(float(v)) {}
   constexpr explicit Float(unsigned long v) : mValue(float(v)) {}
+  constexpr explicit Float(unsigned long long v) : mValue(float(v)) {}
   constexpr explicit Float(double v) : mValue(float(v)) {}
 
   constexpr float toFloat() const { return mValue; }
@@ -36,7 +38,10 @@ class Float {
          : int32_t(mValue);
   }
 
-  static constexpr Float max() { return Float(FLT_MAX); }
+  // The largest finite value. Arduino.h defines max(a, b) as a macro, so a
+  // sketch writes (Float::max)() or Float::largest().
+  static constexpr Float(max)() { return Float(FLT_MAX); }
+  static constexpr Float largest() { return Float(FLT_MAX); }
   static constexpr Float lowest() { return Float(-FLT_MAX); }
   // The smallest positive normal float.
   static constexpr Float epsilon() { return Float(FLT_MIN); }
@@ -48,7 +53,7 @@ class Float {
   Float operator/(Float b) const {
     if (b.mValue == 0.0f) {
       detail::raiseMathError(MathError::kDivideByZero);
-      return mValue > 0.0f ? max() : (mValue < 0.0f ? lowest() : Float());
+      return mValue > 0.0f ? (max)() : (mValue < 0.0f ? lowest() : Float());
     }
     return Float(mValue / b.mValue);
   }
@@ -83,10 +88,34 @@ inline Float sqrt(Float x) {
   }
   return Float(::sqrtf(x.toFloat()));
 }
+// The angle of (x, y) in radians, in [-pi, pi]; atan2(0, 0) is 0.
 inline Float atan2(Float y, Float x) {
   return Float(::atan2f(y.toFloat(), x.toFloat()));
 }
 inline Float sin(Float x) { return Float(::sinf(x.toFloat())); }
 inline Float cos(Float x) { return Float(::cosf(x.toFloat())); }
+
+// Binary angles (Turns.hpp): sinTurns<Float>(a), cosTurns<Float>(a).
+namespace detail {
+template <>
+struct TurnsOf<Float> {
+  // As a signed turn fraction, so that sinf reduces a small argument.
+  static float angleOf(uint16_t turns) {
+    int32_t s = turns < 32768u ? int32_t(turns) : int32_t(turns) - 65536;
+    return float(s) * float(6.283185307179586 / 65536.0);
+  }
+  static Float sinTurns(uint16_t turns) { return Float(::sinf(angleOf(turns))); }
+  static Float cosTurns(uint16_t turns) { return Float(::cosf(angleOf(turns))); }
+};
+}  // namespace detail
+
+// The binary angle nearest to `radians`, wrapped into one turn.
+// Non-finite input gives 0.
+inline uint16_t radiansToTurns(Float angle) {
+  float t = angle.toFloat() * float(65536.0 / 6.283185307179586);
+  if (!(::fabsf(t) < 1.0e30f)) return 0;
+  t -= 65536.0f * ::floorf(t * (1.0f / 65536.0f));  // now in [0, 65536]
+  return uint16_t(uint32_t(t + 0.5f) & 0xffffu);
+}
 
 }  // namespace tinyparticle

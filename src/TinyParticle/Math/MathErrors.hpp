@@ -25,6 +25,14 @@ enum : uint8_t {
 };
 }
 
+// Marks a variable that hand-written AVR code (Math/FixedAvr.hpp) reads by
+// its symbol name: link-time optimization must keep it, under that name.
+#if defined(__AVR__) && defined(__GNUC__)
+#define TINYPARTICLE_ASM_VISIBLE __attribute__((used, externally_visible))
+#else
+#define TINYPARTICLE_ASM_VISIBLE
+#endif
+
 namespace detail {
 // A template's static member may be defined in a header (C++11 has no
 // inline variables), so every translation unit shares this one byte.
@@ -33,7 +41,7 @@ struct MathErrorStore {
   static uint8_t flags;
 };
 template <typename Tag>
-uint8_t MathErrorStore<Tag>::flags = 0;
+uint8_t MathErrorStore<Tag>::flags TINYPARTICLE_ASM_VISIBLE = 0;
 
 inline void raiseMathError(uint8_t error) {
   MathErrorStore<void>::flags |= error;

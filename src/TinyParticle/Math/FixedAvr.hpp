@@ -1,0 +1,1379 @@
+// Hand-written AVR code for Fixed, used when TINYPARTICLE_AVR_ASM is 1 (the
+// default on AVR chips with MUL):
+// - Q16.16 multiply, divide and square root, and the core of atan2 for
+//   every format;
+// - Q24.8 multiply, divide and square root and Q8.8 divide and square root
+//   through the Q16.16 routines (exact rescalings).
+// Multiply, divide and square root return exactly what the portable
+// reference in Fixed.hpp returns, flags included; atan2 follows the same
+// steps as the portable code to within its tolerance. The target tests
+// check both on the simulated ATmega328P.
+//
+// The routines are out-of-line naked functions, so that the engine's many
+// multiplies share one copy of the code (a call costs a few cycles,
+// inlining would cost hundreds of bytes of flash per use) and the rare
+// paths can sit after a `ret`.
+//
+// Register use follows avr-gcc's calling convention: the first 32-bit
+// argument arrives in r22..r25, the second in r18..r21 (a second 8-bit one
+// in r20), the result leaves in r22..r25; r18..r27, r30, r31 and r0 may be
+// clobbered, others are saved; r1 must be zero on return.
+#pragma once
+
+#include <stdint.h>
+
+#include "../Configuration.hpp"
+#include "MathErrors.hpp"
+#include "TrigTables.hpp"
+
+#if defined(__AVR__) && defined(__AVR_HAVE_MUL__)
+
+namespace tinyparticle {
+namespace detail {
+
+// The flags byte by its symbol name: a naked function may hold nothing but
+// assembly, so the name is spelled out.
+// The compiler does not read assembly, so it does not know that the flags
+// byte changes there; with link-time optimization it would then keep the
+// byte in a register across a call, or drop a store before it. Callers put
+// flagsTouched() around each call: an empty statement that claims to read
+// and write the byte (it also makes sure the byte is defined).
+TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
+  asm volatile("" : "+m"(MathErrorStore<void>::flags));
+}
+
+#define TINYPARTICLE_AVR_FLAGS \
+  "_ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE"
+// TrigTables<>::kRecip, kSqrt and kAtan, likewise.
+#define TINYPARTICLE_AVR_RECIP \
+  "_ZN12tinyparticle6detail10TrigTablesIvE6kRecipE"
+#define TINYPARTICLE_AVR_SQRT \
+  "_ZN12tinyparticle6detail10TrigTablesIvE5kSqrtE"
+#define TINYPARTICLE_AVR_ATAN \
+  "_ZN12tinyparticle6detail10TrigTablesIvE5kAtanE"
+
+// ---------------------------------------------------------------------------
+// Q16.16 multiply: round(a * b / 2^16), ties away from zero, saturated.
+//
+// Method: multiply the magnitudes, then give the result its sign. The
+// 64-bit product of the magnitudes is summed column by column (all partial
+// products of one byte weight together, "product scanning"), so only three
+// accumulator bytes are live at a time and no carry has to travel far.
+// The accumulator is kept complemented (~sum): adding a partial product
+// becomes subtracting it, and the carry into the third byte becomes
+// `sbci x, 0`, so no register has to hold zero (MUL overwrites r1). The
+// rounding constant 2^15 is preloaded; byte 0 of the sum never carries
+// (nothing but the low byte of a0*b0 lands there), so it is not kept.
+// Nine MULs when both magnitudes fit three bytes (|x| < 256, the usual case
+// in a physics scene), twelve when one of them does; when neither does,
+// the product cannot fit and saturates at once.
+// ---------------------------------------------------------------------------
+__attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
+                                                                int32_t) {
+  asm volatile(
+      // T = sign of the result; a and b become magnitudes (the most
+      // negative value stays 0x80000000, its magnitude as unsigned).
+      "    mov  r30, r25\n"
+      "    eor  r30, r21\n"
+      "    bst  r30, 7\n"
+      "    sbrs r25, 7\n"
+      "    rjmp 1f\n"
+      "    com  r25\n"
+      "    com  r24\n"
+      "    com  r23\n"
+      "    neg  r22\n"
+      "    sbci r23, 0xff\n"
+      "    sbci r24, 0xff\n"
+      "    sbci r25, 0xff\n"
+      "1:\n"
+      "    sbrs r21, 7\n"
+      "    rjmp 2f\n"
+      "    com  r21\n"
+      "    com  r20\n"
+      "    com  r19\n"
+      "    neg  r18\n"
+      "    sbci r19, 0xff\n"
+      "    sbci r20, 0xff\n"
+      "    sbci r21, 0xff\n"
+      "2:\n"
+      // Pick a path by the top bytes (r1 is still zero here).
+      "    cpse r25, r1\n"
+      "    rjmp 4f\n"
+      "    cpse r21, r1\n"
+      "    rjmp 5f\n"
+      // ---- a3 == 0 and b3 == 0 (|a|, |b| < 256): nine MULs. The complemented
+      // sum: byte 1 in r30, bytes 2..5 in r26, r27, r30, r31 (r30 is reused
+      // once the carries of byte 1 are out).
+      "    ldi  r30, 0x7f\n"          // ~0x80: the rounding constant 2^15
+      "    ldi  r26, 0xff\n"
+      "    mul  r22, r18\n"           // column 0: only the high byte matters
+      "    sub  r30, r1\n"
+      "    sbci r26, 0\n"
+      "    ldi  r27, 0xff\n"          // column 1
+      "    mul  r22, r19\n"
+      "    sub  r30, r0\n"
+      "    sbc  r26, r1\n"
+      "    sbci r27, 0\n"
+      "    mul  r23, r18\n"
+      "    sub  r30, r0\n"
+      "    sbc  r26, r1\n"
+      "    sbci r27, 0\n"
+      "    ldi  r30, 0xff\n"          // column 2
+      "    mul  r22, r20\n"
+      "    sub  r26, r0\n"
+      "    sbc  r27, r1\n"
+      "    sbci r30, 0\n"
+      "    mul  r23, r19\n"
+      "    sub  r26, r0\n"
+      "    sbc  r27, r1\n"
+      "    sbci r30, 0\n"
+      "    mul  r24, r18\n"
+      "    sub  r26, r0\n"
+      "    sbc  r27, r1\n"
+      "    sbci r30, 0\n"
+      "    ldi  r31, 0xff\n"          // column 3
+      "    mul  r23, r20\n"
+      "    sub  r27, r0\n"
+      "    sbc  r30, r1\n"
+      "    sbci r31, 0\n"
+      "    mul  r24, r19\n"
+      "    sub  r27, r0\n"
+      "    sbc  r30, r1\n"
+      "    sbci r31, 0\n"
+      // column 4: the sum stays below 2^48, so no byte 6
+      "    mul  r24, r20\n"
+      "    sub  r30, r0\n"
+      "    sbc  r31, r1\n"
+      "7:\n"
+      // Complemented bytes 2..5 in r26, r27, r30, r31, bytes 6 and 7 zero. The
+      // magnitude R may be at most 2^31 - 1, or 2^31 if negative.
+      "    clr  r1\n"
+      "    brts 9f\n"
+      "    sbrs r31, 7\n"             // R >= 2^31: too big
+      "    rjmp 8f\n"
+      "    com  r26\n"
+      "    com  r27\n"
+      "    com  r30\n"
+      "    com  r31\n"
+      "    movw r22, r26\n"
+      "    movw r24, r30\n"
+      "    ret\n"
+      "9:\n"
+      // Negative: -R = ~R + 1, the complemented bytes plus one.
+      "    subi r26, 0xff\n"
+      "    sbci r27, 0xff\n"
+      "    sbci r30, 0xff\n"
+      "    sbci r31, 0xff\n"
+      "    brmi 10f\n"                // -R in [-2^31, -1]
+      "    breq 10f\n"                // R == 0
+      "    rjmp 8f\n"
+      "10:\n"
+      "    movw r22, r26\n"
+      "    movw r24, r30\n"
+      "    ret\n"
+      "4:\n"
+      // a3 != 0: too big if b3 != 0 too (the product is at least 2^48), else
+      // swap a and b so that a3 == 0 in the path below.
+      "    cpse r21, r1\n"
+      "    rjmp 8f\n"
+      "    movw r26, r22\n"
+      "    movw r30, r24\n"
+      "    movw r22, r18\n"
+      "    movw r24, r20\n"
+      "    movw r18, r26\n"
+      "    movw r20, r30\n"
+      "5:\n"
+      // ---- a3 == 0, b3 != 0: twelve MULs; byte 6 goes to r22 once a0 is
+      // no longer needed.
+      "    ldi  r30, 0x7f\n"
+      "    ldi  r26, 0xff\n"
+      "    mul  r22, r18\n"           // column 0
+      "    sub  r30, r1\n"
+      "    sbci r26, 0\n"
+      "    ldi  r27, 0xff\n"          // column 1
+      "    mul  r22, r19\n"
+      "    sub  r30, r0\n"
+      "    sbc  r26, r1\n"
+      "    sbci r27, 0\n"
+      "    mul  r23, r18\n"
+      "    sub  r30, r0\n"
+      "    sbc  r26, r1\n"
+      "    sbci r27, 0\n"
+      "    ldi  r30, 0xff\n"          // column 2
+      "    mul  r22, r20\n"
+      "    sub  r26, r0\n"
+      "    sbc  r27, r1\n"
+      "    sbci r30, 0\n"
+      "    mul  r23, r19\n"
+      "    sub  r26, r0\n"
+      "    sbc  r27, r1\n"
+      "    sbci r30, 0\n"
+      "    mul  r24, r18\n"
+      "    sub  r26, r0\n"
+      "    sbc  r27, r1\n"
+      "    sbci r30, 0\n"
+      "    ldi  r31, 0xff\n"          // column 3
+      "    mul  r22, r21\n"
+      "    sub  r27, r0\n"
+      "    sbc  r30, r1\n"
+      "    sbci r31, 0\n"
+      "    mul  r23, r20\n"
+      "    sub  r27, r0\n"
+      "    sbc  r30, r1\n"
+      "    sbci r31, 0\n"
+      "    mul  r24, r19\n"
+      "    sub  r27, r0\n"
+      "    sbc  r30, r1\n"
+      "    sbci r31, 0\n"
+      "    ldi  r22, 0xff\n"          // column 4
+      "    mul  r23, r21\n"
+      "    sub  r30, r0\n"
+      "    sbc  r31, r1\n"
+      "    sbci r22, 0\n"
+      "    mul  r24, r20\n"
+      "    sub  r30, r0\n"
+      "    sbc  r31, r1\n"
+      "    sbci r22, 0\n"
+      // column 5: the sum is below 2^56, so byte 6 takes no carry out
+      "    mul  r24, r21\n"
+      "    sub  r31, r0\n"
+      "    sbc  r22, r1\n"
+      "    cpi  r22, 0xff\n"          // byte 6 must be zero (complemented: 0xff)
+      "    brne 8f\n"
+      "    rjmp 7b\n"
+      "8:\n"
+      // Too big: saturate with the sign of the result, raise kOverflow.
+      "    clr  r1\n"
+      "    lds  r26, " TINYPARTICLE_AVR_FLAGS "\n"
+      "    ori  r26, 4\n"
+      "    sts  " TINYPARTICLE_AVR_FLAGS ", r26\n"
+      "    ldi  r22, 0xff\n"
+      "    ldi  r23, 0xff\n"
+      "    ldi  r24, 0xff\n"
+      "    ldi  r25, 0x7f\n"
+      "    brtc 11f\n"                // 0x7fffffff
+      "    subi r22, 0xff\n"          // + 1: 0x80000000
+      "    sbci r23, 0xff\n"
+      "    sbci r24, 0xff\n"
+      "    sbci r25, 0xff\n"
+      "11:\n"
+      "    ret\n"
+      // It writes the flags byte, so callers must not keep it in a register.
+      ::: "memory");
+}
+
+// ---------------------------------------------------------------------------
+// Q16.16 divide: round(a * 2^16 / b), ties away from zero, saturated;
+// b != 0 (Fixed::divide handles zero).
+//
+// Method: long division in 16-bit words with multiplies instead of trial
+// subtractions. D = |b| shifted until its top bit is set; the numerator
+// |a| * 2^16 is shifted along and split into words. A reciprocal
+// v = floor((2^48 - 1) / D) - 2^16 is computed once (table kRecip, then
+// made exact) and each quotient word costs eleven MULs and at most two
+// corrections (the 3-by-2 step of Moller and Granlund, "Improved division by
+// invariant integers", IEEE Trans. Computers 60(2), 2011). A quotient below
+// 1.0 needs one word instead of two. Rounding compares twice the remainder
+// with D.
+// ---------------------------------------------------------------------------
+__attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
+                                                              int32_t) {
+  asm volatile(
+      // Registers: T = sign of the result; r15 = 0; D = |b| normalized in
+      // r21:r20 (d1) and r19:r18 (d0); W = |a| << (16 + s) as three words n3
+      // r27:r26, n2 r25:r24, n1 r23:r22; v in r17:r16.
+      "    push r14\n"
+      "    push r15\n"
+      "    push r16\n"
+      "    push r17\n"
+      "    push r28\n"
+      "    push r29\n"
+      "    clr  r15\n"
+      // Sign and magnitudes (the most negative value becomes 0x80000000).
+      "    mov  r30, r25\n"
+      "    eor  r30, r21\n"
+      "    bst  r30, 7\n"
+      "    sbrs r25, 7\n"
+      "    rjmp 1f\n"
+      "    com  r25\n"
+      "    com  r24\n"
+      "    com  r23\n"
+      "    neg  r22\n"
+      "    sbci r23, 0xff\n"
+      "    sbci r24, 0xff\n"
+      "    sbci r25, 0xff\n"
+      "1:\n"
+      "    sbrs r21, 7\n"
+      "    rjmp 2f\n"
+      "    com  r21\n"
+      "    com  r20\n"
+      "    com  r19\n"
+      "    neg  r18\n"
+      "    sbci r19, 0xff\n"
+      "    sbci r20, 0xff\n"
+      "    sbci r21, 0xff\n"
+      "2:\n"
+      "    clr  r26\n"
+      "    clr  r27\n"
+      // Normalize D (top bit set), shifting W along: whole bytes first.
+      "3:\n"
+      "    cpse r21, r15\n"
+      "    rjmp 4f\n"
+      "    cpse r27, r15\n"               // a nonzero byte would leave W: quotient >= 2^32
+      "    rjmp 30f\n"
+      "    mov  r21, r20\n"
+      "    mov  r20, r19\n"
+      "    mov  r19, r18\n"
+      "    clr  r18\n"
+      "    mov  r27, r26\n"
+      "    mov  r26, r25\n"
+      "    mov  r25, r24\n"
+      "    mov  r24, r23\n"
+      "    mov  r23, r22\n"
+      "    clr  r22\n"
+      "    rjmp 3b\n"
+      "4:\n"
+      "    sbrc r21, 7\n"
+      "    rjmp 5f\n"
+      "    lsl  r18\n"
+      "    rol  r19\n"
+      "    rol  r20\n"
+      "    rol  r21\n"
+      "    lsl  r22\n"
+      "    rol  r23\n"
+      "    rol  r24\n"
+      "    rol  r25\n"
+      "    rol  r26\n"
+      "    rol  r27\n"
+      "    brcc 4b\n"
+      "    rjmp 30f\n"
+      "5:\n"
+      // The quotient fits 32 bits only if n3:n2 < D.
+      "    cp   r24, r18\n"
+      "    cpc  r25, r19\n"
+      "    cpc  r26, r20\n"
+      "    cpc  r27, r21\n"
+      "    brcs 6f\n"
+      "    rjmp 30f\n"
+      "6:\n"
+      // v = floor((2^48 - 1) / D) - 2^16, after Moller and Granlund,
+      // "Improved division by invariant integers" (2011). First the word
+      // reciprocal floor((2^32 - 1) / d1) - 2^16: interpolated in kRecip
+      // (index: the 7 bits below the top bit of d1) ...
+      "    mov  r30, r21\n"
+      "    andi r30, 0x7f\n"
+      "    lsl  r30\n"
+      "    clr  r31\n"
+      "    subi r30, lo8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    sbci r31, hi8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    lpm  r16, Z+\n"
+      "    lpm  r17, Z+\n"
+      "    lpm  r28, Z+\n"
+      "    lpm  r29, Z\n"
+      "    sub  r28, r16\n"               // r29:r28 = entry[i] - entry[i + 1]
+      "    sbc  r29, r17\n"
+      "    com  r29\n"
+      "    neg  r28\n"
+      "    sbci r29, 0xff\n"
+      "    mul  r28, r20\n"               // minus (difference * (d1 & 0xff)) >> 8
+      "    mov  r30, r1\n"
+      "    mul  r29, r20\n"
+      "    add  r30, r0\n"
+      "    mov  r31, r1\n"
+      "    adc  r31, r15\n"
+      "    sub  r16, r30\n"
+      "    sbc  r17, r31\n"
+      // ... then made exact: S = (2^16 + v) * d1 must lie in (2^32 - 1 - d1,
+      // 2^32 - 1]; S in (carry, r31, r30, r29, r28).
+      "    mul  r16, r20\n"
+      "    movw r28, r0\n"
+      "    mul  r17, r21\n"
+      "    movw r30, r0\n"
+      "    mul  r16, r21\n"
+      "    add  r29, r0\n"
+      "    adc  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    mul  r17, r20\n"
+      "    add  r29, r0\n"
+      "    adc  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    add  r30, r20\n"
+      "    adc  r31, r21\n"
+      "    brcc 8f\n"
+      "7:\n"
+      "    subi r16, 1\n"                 // S >= 2^32: v too big
+      "    sbci r17, 0\n"
+      "    sub  r28, r20\n"
+      "    sbc  r29, r21\n"
+      "    sbc  r30, r15\n"
+      "    sbc  r31, r15\n"
+      "    brcc 7b\n"
+      "    rjmp 9f\n"
+      "8:\n"
+      "    add  r28, r20\n"               // S + d1 < 2^32: v too small
+      "    adc  r29, r21\n"
+      "    adc  r30, r15\n"
+      "    adc  r31, r15\n"
+      "    brcs 10f\n"
+      "    subi r16, 0xff\n"
+      "    sbci r17, 0xff\n"
+      "    rjmp 8b\n"
+      "10:\n"
+      "    sub  r28, r20\n"               // undo the last step (low word only)
+      "    sbc  r29, r21\n"
+      "9:\n"
+      // The low word of S is p = d1 * v mod 2^16. Now account for d0,
+      // unless it is zero (|b| had at most 16 significant bits).
+      "    cp   r18, r15\n"
+      "    cpc  r19, r15\n"
+      "    breq 13f\n"
+      "    add  r28, r18\n"
+      "    adc  r29, r19\n"
+      "    brcc 11f\n"
+      "    subi r16, 1\n"
+      "    sbci r17, 0\n"
+      "    cp   r28, r20\n"
+      "    cpc  r29, r21\n"
+      "    brcs 12f\n"
+      "    subi r16, 1\n"
+      "    sbci r17, 0\n"
+      "    sub  r28, r20\n"
+      "    sbc  r29, r21\n"
+      "12:\n"
+      "    sub  r28, r20\n"
+      "    sbc  r29, r21\n"
+      "11:\n"
+      // t = v * d0: high word in r31:r30, low word in r1:r0.
+      "    mul  r17, r19\n"
+      "    movw r30, r0\n"
+      "    mul  r16, r19\n"
+      "    mov  r14, r0\n"
+      "    add  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    mul  r17, r18\n"
+      "    add  r14, r0\n"
+      "    adc  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    mul  r16, r18\n"
+      "    add  r1, r14\n"
+      "    adc  r30, r15\n"
+      "    adc  r31, r15\n"
+      "    add  r28, r30\n"
+      "    adc  r29, r31\n"
+      "    brcc 13f\n"
+      "    subi r16, 1\n"
+      "    sbci r17, 0\n"
+      "    cp   r0, r18\n"
+      "    cpc  r1, r19\n"
+      "    cpc  r28, r20\n"
+      "    cpc  r29, r21\n"
+      "    brcs 13f\n"
+      "    subi r16, 1\n"
+      "    sbci r17, 0\n"
+      "13:\n"
+      // First quotient word q1 from (n3, n2, n1); it is 0, and the step is
+      // skipped, when (n3, n2, n1) < D: the usual case for a result below 1.
+      "    cp   r26, r15\n"
+      "    cpc  r27, r15\n"
+      "    brne 14f\n"
+      "    cp   r22, r18\n"
+      "    cpc  r23, r19\n"
+      "    cpc  r24, r20\n"
+      "    cpc  r25, r21\n"
+      "    brcc 14f\n"
+      "    rjmp 15f\n"
+      "14:\n"
+      "    mul  r16, r26\n"               // (q1 q0) = v * u2 + (u2, u1) in r31:r30, r29:r28
+      "    movw r28, r0\n"
+      "    mul  r17, r27\n"
+      "    movw r30, r0\n"
+      "    mul  r16, r27\n"
+      "    add  r29, r0\n"
+      "    adc  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    mul  r17, r26\n"
+      "    add  r29, r0\n"
+      "    adc  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    add  r28, r24\n"
+      "    adc  r29, r25\n"
+      "    adc  r30, r26\n"
+      "    adc  r31, r27\n"
+      "    mul  r30, r20\n"               // r1w = u1 - q1 * d1 (mod 2^16)
+      "    sub  r24, r0\n"
+      "    sbc  r25, r1\n"
+      "    mul  r30, r21\n"
+      "    sub  r25, r0\n"
+      "    mul  r31, r20\n"
+      "    sub  r25, r0\n"
+      "    cp   r18, r15\n"               // (r1w, u0) -= q1 * d0 (when d0 != 0), then -= D
+      "    cpc  r19, r15\n"
+      "    breq 3f\n"
+      "    mul  r30, r18\n"
+      "    sub  r22, r0\n"
+      "    sbc  r23, r1\n"
+      "    sbci r24, 0\n"
+      "    sbci r25, 0\n"
+      "    mul  r31, r19\n"
+      "    sub  r24, r0\n"
+      "    sbc  r25, r1\n"
+      "    mul  r30, r19\n"
+      "    sub  r23, r0\n"
+      "    sbc  r24, r1\n"
+      "    sbci r25, 0\n"
+      "    mul  r31, r18\n"
+      "    sub  r23, r0\n"
+      "    sbc  r24, r1\n"
+      "    sbci r25, 0\n"
+      "3:\n"
+      "    sub  r22, r18\n"
+      "    sbc  r23, r19\n"
+      "    sbc  r24, r20\n"
+      "    sbc  r25, r21\n"
+      "    subi r30, 0xff\n"              // q1 + 1
+      "    sbci r31, 0xff\n"
+      "    cp   r24, r28\n"               // r1w >= q0: one less, add D back
+      "    cpc  r25, r29\n"
+      "    brcs 1f\n"
+      "    subi r30, 1\n"
+      "    sbci r31, 0\n"
+      "    add  r22, r18\n"
+      "    adc  r23, r19\n"
+      "    adc  r24, r20\n"
+      "    adc  r25, r21\n"
+      "1:\n"
+      "    cp   r22, r18\n"               // remainder >= D (rare): one more
+      "    cpc  r23, r19\n"
+      "    cpc  r24, r20\n"
+      "    cpc  r25, r21\n"
+      "    brcs 2f\n"
+      "    subi r30, 0xff\n"
+      "    sbci r31, 0xff\n"
+      "    sub  r22, r18\n"
+      "    sbc  r23, r19\n"
+      "    sbc  r24, r20\n"
+      "    sbc  r25, r21\n"
+      "2:\n"
+      "    movw r26, r30\n"               // q1
+      "15:\n"
+      // Second word q0 from (r1, r0, 0): the remainder is then in
+      // r23:r22:r25:r24.
+      "    mul  r16, r24\n"               // (q1 q0) = v * u2 + (u2, u1) in r31:r30, r29:r28
+      "    movw r28, r0\n"
+      "    mul  r17, r25\n"
+      "    movw r30, r0\n"
+      "    mul  r16, r25\n"
+      "    add  r29, r0\n"
+      "    adc  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    mul  r17, r24\n"
+      "    add  r29, r0\n"
+      "    adc  r30, r1\n"
+      "    adc  r31, r15\n"
+      "    add  r28, r22\n"
+      "    adc  r29, r23\n"
+      "    adc  r30, r24\n"
+      "    adc  r31, r25\n"
+      "    mul  r30, r20\n"               // r1w = u1 - q1 * d1 (mod 2^16)
+      "    sub  r22, r0\n"
+      "    sbc  r23, r1\n"
+      "    mul  r30, r21\n"
+      "    sub  r23, r0\n"
+      "    mul  r31, r20\n"
+      "    sub  r23, r0\n"
+      "    clr  r24\n"                    // u0 = 0
+      "    clr  r25\n"
+      "    cp   r18, r15\n"               // (r1w, u0) -= q1 * d0 (when d0 != 0), then -= D
+      "    cpc  r19, r15\n"
+      "    breq 3f\n"
+      "    mul  r30, r18\n"
+      "    sub  r24, r0\n"
+      "    sbc  r25, r1\n"
+      "    sbci r22, 0\n"
+      "    sbci r23, 0\n"
+      "    mul  r31, r19\n"
+      "    sub  r22, r0\n"
+      "    sbc  r23, r1\n"
+      "    mul  r30, r19\n"
+      "    sub  r25, r0\n"
+      "    sbc  r22, r1\n"
+      "    sbci r23, 0\n"
+      "    mul  r31, r18\n"
+      "    sub  r25, r0\n"
+      "    sbc  r22, r1\n"
+      "    sbci r23, 0\n"
+      "3:\n"
+      "    sub  r24, r18\n"
+      "    sbc  r25, r19\n"
+      "    sbc  r22, r20\n"
+      "    sbc  r23, r21\n"
+      "    subi r30, 0xff\n"              // q1 + 1
+      "    sbci r31, 0xff\n"
+      "    cp   r22, r28\n"               // r1w >= q0: one less, add D back
+      "    cpc  r23, r29\n"
+      "    brcs 1f\n"
+      "    subi r30, 1\n"
+      "    sbci r31, 0\n"
+      "    add  r24, r18\n"
+      "    adc  r25, r19\n"
+      "    adc  r22, r20\n"
+      "    adc  r23, r21\n"
+      "1:\n"
+      "    cp   r24, r18\n"               // remainder >= D (rare): one more
+      "    cpc  r25, r19\n"
+      "    cpc  r22, r20\n"
+      "    cpc  r23, r21\n"
+      "    brcs 2f\n"
+      "    subi r30, 0xff\n"
+      "    sbci r31, 0xff\n"
+      "    sub  r24, r18\n"
+      "    sbc  r25, r19\n"
+      "    sbc  r22, r20\n"
+      "    sbc  r23, r21\n"
+      "2:\n"
+      // Round: one more when twice the remainder reaches D.
+      "    lsl  r24\n"
+      "    rol  r25\n"
+      "    rol  r22\n"
+      "    rol  r23\n"
+      "    brcs 16f\n"
+      "    cp   r24, r18\n"
+      "    cpc  r25, r19\n"
+      "    cpc  r22, r20\n"
+      "    cpc  r23, r21\n"
+      "    brcs 17f\n"
+      "16:\n"
+      "    subi r30, 0xff\n"
+      "    sbci r31, 0xff\n"
+      "    sbci r26, 0xff\n"
+      "    sbci r27, 0xff\n"
+      "    breq 30f\n"                    // 2^32: too big
+      "17:\n"
+      // Quotient magnitude Q in r27:r26:r31:r30: at most 2^31 - 1, or 2^31
+      // when negative.
+      "    movw r22, r30\n"
+      "    movw r24, r26\n"
+      "    brts 18f\n"
+      "    sbrc r25, 7\n"
+      "    rjmp 30f\n"
+      "    rjmp 31f\n"
+      "18:\n"
+      "    com  r25\n"
+      "    com  r24\n"
+      "    com  r23\n"
+      "    neg  r22\n"
+      "    sbci r23, 0xff\n"
+      "    sbci r24, 0xff\n"
+      "    sbci r25, 0xff\n"
+      "    brmi 31f\n"
+      "    breq 31f\n"
+      "30:\n"
+      // Too big: saturate with the sign of the result, raise kOverflow.
+      "    lds  r30, " TINYPARTICLE_AVR_FLAGS "\n"
+      "    ori  r30, 4\n"
+      "    sts  " TINYPARTICLE_AVR_FLAGS ", r30\n"
+      "    ldi  r22, 0xff\n"
+      "    ldi  r23, 0xff\n"
+      "    ldi  r24, 0xff\n"
+      "    ldi  r25, 0x7f\n"
+      "    brtc 31f\n"
+      "    subi r22, 0xff\n"
+      "    sbci r23, 0xff\n"
+      "    sbci r24, 0xff\n"
+      "    sbci r25, 0xff\n"
+      "31:\n"
+      "    clr  r1\n"
+      "    pop  r29\n"
+      "    pop  r28\n"
+      "    pop  r17\n"
+      "    pop  r16\n"
+      "    pop  r15\n"
+      "    pop  r14\n"
+      "    ret\n"
+
+      ::: "memory");
+}
+
+// ---------------------------------------------------------------------------
+// Square root: round(sqrt(x * 2^16) / 2^e0) for x >= 0 (Fixed::squareRoot
+// handles x < 0): e0 = 0 for Q16.16, e0 = 4 for formats with 8 fraction
+// bits (Q24.8: x < 2^31; Q8.8: x < 2^15).
+//
+// Method: digit by digit, one root byte at a time, instead of one bit. x is
+// shifted left by an even number of bits; the first root byte comes from a
+// table of square roots of the top byte (kSqrt, then at most one step), and
+// each further byte is estimated from the remainder with a reciprocal
+// (kRecip) and fixed with at most one step, the remainder being updated
+// exactly. Small arguments (x < 0.25) need two root bytes, not three.
+// Checked exhaustively against the reference, in a model of these steps,
+// over all 2^31 arguments.
+// ---------------------------------------------------------------------------
+__attribute__((naked, noinline)) inline int32_t avrSquareRoot(int32_t,
+                                                             uint8_t) {
+  asm volatile(
+      // x in r25:r22, x >= 0 (the caller handles x < 0); r20 = e0, the
+      // extra halvings of the result: 0 for Q16.16 (the root of x * 2^16),
+      // 4 for 8 fraction bits (the root of x * 2^8 = that / 16). sqrt(0) = 0.
+      "    cp   r22, r1\n"
+      "    cpc  r23, r1\n"
+      "    cpc  r24, r1\n"
+      "    cpc  r25, r1\n"
+      "    brne 1f\n"
+      "    ret\n"
+      "1:\n"
+      // Normalize: x <<= 2e until its top two bits are not both zero; e in
+      // r18 (from e0). The root of x * 2^16 * 4^(e - e0) is computed, then
+      // shifted back by e.
+      "    mov  r18, r20\n"
+      "2:\n"
+      "    tst  r25\n"
+      "    brne 3f\n"
+      "    mov  r25, r24\n"
+      "    mov  r24, r23\n"
+      "    mov  r23, r22\n"
+      "    clr  r22\n"
+      "    subi r18, -4\n"
+      "    rjmp 2b\n"
+      "3:\n"
+      "    cpi  r25, 0x40\n"
+      "    brcc 4f\n"
+      "    lsl  r22\n"
+      "    rol  r23\n"
+      "    rol  r24\n"
+      "    rol  r25\n"
+      "    lsl  r22\n"
+      "    rol  r23\n"
+      "    rol  r24\n"
+      "    rol  r25\n"
+      "    inc  r18\n"
+      "    rjmp 3b\n"
+      "4:\n"
+      // Root byte a (r19) = floor(sqrt(top word)): kSqrt gives it for the top
+      // byte, or one less; R1 = top word - a^2 (at most 2a) in r21:r20.
+      "    mov  r30, r25\n"
+      "    clr  r31\n"
+      "    subi r30, lo8(-(" TINYPARTICLE_AVR_SQRT " - 64))\n"
+      "    sbci r31, hi8(-(" TINYPARTICLE_AVR_SQRT " - 64))\n"
+      "    lpm  r19, Z\n"
+      "    cpi  r19, 0xff\n"
+      "    breq 5f\n"
+      "    mov  r20, r19\n"
+      "    inc  r20\n"
+      "    mul  r20, r20\n"
+      "    cp   r24, r0\n"
+      "    cpc  r25, r1\n"
+      "    brcs 5f\n"
+      "    mov  r19, r20\n"
+      "5:\n"
+      "    mul  r19, r19\n"
+      "    movw r20, r24\n"
+      "    sub  r20, r0\n"
+      "    sbc  r21, r1\n"
+      // Root byte b ~ X / 512a, X = R1:x1:x0 (25 bits): with v = kRecip entry
+      // for 256a (a >= 128) or 512a, about 2^32 / that - 2^16, from the top
+      // 17 bits Xh = R1:x1 as (Xh + Xh * v / 2^16) >> 9 (or 8).
+      "    mov  r30, r19\n"
+      "    sbrs r19, 7\n"
+      "    lsl  r30\n"
+      "    andi r30, 0x7f\n"
+      "    lsl  r30\n"
+      "    clr  r31\n"
+      "    subi r30, lo8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    sbci r31, hi8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    lpm  r24, Z+\n"
+      "    lpm  r25, Z\n"
+      "    clr  r31\n"
+      "    mul  r23, r24\n"               // floor(Xh * v / 2^16) in r30:r27 (r31 = 0)
+      "    mov  r26, r1\n"
+      "    clr  r27\n"
+      "    clr  r30\n"
+      "    mul  r23, r25\n"
+      "    add  r26, r0\n"
+      "    adc  r27, r1\n"
+      "    adc  r30, r31\n"
+      "    mul  r20, r24\n"
+      "    add  r26, r0\n"
+      "    adc  r27, r1\n"
+      "    adc  r30, r31\n"
+      "    mul  r20, r25\n"
+      "    add  r27, r0\n"
+      "    adc  r30, r1\n"
+      "    sbrs r21, 0\n"
+      "    rjmp 6f\n"
+      "    add  r27, r24\n"
+      "    adc  r30, r25\n"
+      "6:\n"
+      "    add  r27, r23\n"               // + Xh, then >> 8: r26:r30
+      "    adc  r30, r20\n"
+      "    mov  r26, r21\n"
+      "    adc  r26, r31\n"
+      "    sbrs r19, 7\n"
+      "    rjmp 7f\n"
+      "    lsr  r26\n"
+      "    ror  r30\n"
+      "7:\n"
+      "    tst  r26\n"                    // at most 255
+      "    breq 8f\n"
+      "    ldi  r30, 0xff\n"
+      "8:\n"
+      // R2 = X - b * (512a + b) in r21:r20:r23:r22; one correction at most.
+      "    mul  r30, r19\n"
+      "    movw r26, r0\n"
+      "    lsl  r26\n"
+      "    rol  r27\n"
+      "    clr  r24\n"
+      "    rol  r24\n"
+      "    mul  r30, r30\n"
+      "    add  r26, r1\n"
+      "    clr  r1\n"
+      "    adc  r27, r1\n"
+      "    adc  r24, r1\n"
+      "    sub  r22, r0\n"
+      "    sbc  r23, r26\n"
+      "    sbc  r20, r27\n"
+      "    sbc  r21, r24\n"
+      // t = 2 (256a + b) + 1 in r27:r26:r25 (b is 255 at most ... )
+      "    brcc 9f\n"
+      "    dec  r30\n"                    // negative: b - 1, R2 + t(b - 1)
+      "    mov  r25, r30\n"
+      "    mov  r26, r19\n"
+      "    clr  r27\n"
+      "    sec\n"
+      "    rol  r25\n"
+      "    rol  r26\n"
+      "    rol  r27\n"
+      "    add  r22, r25\n"
+      "    adc  r23, r26\n"
+      "    adc  r20, r27\n"
+      "    rjmp 10f\n"
+      "9:\n"
+      "    mov  r25, r30\n"
+      "    mov  r26, r19\n"
+      "    clr  r27\n"
+      "    sec\n"
+      "    rol  r25\n"
+      "    rol  r26\n"
+      "    rol  r27\n"
+      "    cp   r22, r25\n"
+      "    cpc  r23, r26\n"
+      "    cpc  r20, r27\n"
+      "    cpc  r21, r1\n"
+      "    brcs 10f\n"
+      "    cpi  r30, 0xff\n"
+      "    breq 10f\n"
+      "    inc  r30\n"
+      "    sub  r22, r25\n"
+      "    sbc  r23, r26\n"
+      "    sbc  r20, r27\n"
+      "10:\n"
+      "    mov  r21, r30\n"               // b
+      // (a:b) is the root to 16 bits. When e >= 9 that is enough: round it
+      // shifted right by e - 8.
+      "    cpi  r18, 9\n"
+      "    brcs 12f\n"
+      "    subi r18, 8\n"
+      "11:\n"
+      "    lsr  r19\n"
+      "    ror  r21\n"
+      "    dec  r18\n"
+      "    brne 11b\n"
+      "    mov  r22, r21\n"
+      "    mov  r23, r19\n"
+      "    clr  r24\n"
+      "    clr  r25\n"
+      "    adc  r22, r24\n"
+      "    adc  r23, r24\n"
+      "    ret\n"
+      "12:\n"
+      // Root byte c ~ 128 R2 / (a:b), R2 (17 bits) in r20:r23:r22. d3 = a:b,
+      // doubled when a < 128, and its interpolated reciprocal v3 (r27:r26).
+      "    mov  r25, r19\n"
+      "    mov  r24, r21\n"
+      "    sbrc r25, 7\n"
+      "    rjmp 13f\n"
+      "    lsl  r24\n"
+      "    rol  r25\n"
+      "13:\n"
+      "    mov  r30, r25\n"
+      "    andi r30, 0x7f\n"
+      "    lsl  r30\n"
+      "    clr  r31\n"
+      "    subi r30, lo8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    sbci r31, hi8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    lpm  r26, Z+\n"
+      "    lpm  r27, Z+\n"
+      "    lpm  r0, Z+\n"
+      "    lpm  r1, Z\n"
+      "    movw r30, r26\n"
+      "    sub  r30, r0\n"
+      "    sbc  r31, r1\n"
+      "    mul  r30, r24\n"
+      "    mov  r25, r1\n"
+      "    mul  r31, r24\n"
+      "    sub  r26, r0\n"
+      "    sbc  r27, r1\n"
+      "    sub  r26, r25\n"
+      "    sbci r27, 0\n"
+      // q = R2 * (2^16 + v3): bytes 4:3 in r25:r31 (bytes 2, 1 in r30, r24).
+      "    mov  r30, r22\n"
+      "    mov  r31, r23\n"
+      "    mov  r25, r20\n"
+      "    mul  r22, r26\n"
+      "    mov  r24, r1\n"
+      "    mul  r22, r27\n"
+      "    add  r24, r0\n"
+      "    adc  r30, r1\n"
+      "    clr  r1\n"
+      "    adc  r31, r1\n"
+      "    adc  r25, r1\n"
+      "    mul  r23, r26\n"
+      "    add  r24, r0\n"
+      "    adc  r30, r1\n"
+      "    clr  r1\n"
+      "    adc  r31, r1\n"
+      "    adc  r25, r1\n"
+      "    mul  r23, r27\n"
+      "    add  r30, r0\n"
+      "    adc  r31, r1\n"
+      "    clr  r1\n"
+      "    adc  r25, r1\n"
+      "    sbrs r20, 0\n"
+      "    rjmp 14f\n"
+      "    add  r30, r26\n"
+      "    adc  r31, r27\n"
+      "    adc  r25, r1\n"
+      "14:\n"
+      "    sbrs r19, 7\n"                 // c = q >> 25 (a >= 128) or q >> 24, at most 255
+      "    rjmp 15f\n"
+      "    lsr  r25\n"
+      "    ror  r31\n"
+      "15:\n"
+      "    tst  r25\n"
+      "    breq 16f\n"
+      "    ldi  r31, 0xff\n"
+      "16:\n"
+      // R3 = R2 * 2^16 - c * (512 (a:b) + c) in r20:r23:r22:r1:r30.
+      "    mul  r31, r21\n"
+      "    movw r26, r0\n"
+      "    mul  r31, r19\n"
+      "    add  r27, r0\n"
+      "    clr  r24\n"
+      "    adc  r24, r1\n"
+      "    lsl  r26\n"
+      "    rol  r27\n"
+      "    rol  r24\n"
+      "    clr  r25\n"
+      "    rol  r25\n"
+      "    mul  r31, r31\n"
+      "    add  r26, r1\n"
+      "    clr  r1\n"
+      "    adc  r27, r1\n"
+      "    adc  r24, r1\n"
+      "    adc  r25, r1\n"
+      "    clr  r30\n"
+      "    sub  r30, r0\n"
+      "    sbc  r1, r26\n"
+      "    sbc  r22, r27\n"
+      "    sbc  r23, r24\n"
+      "    sbc  r20, r25\n"
+      // t = 2 (a:b:c) + 1 in r25:r24:r27:r26; one correction at most.
+      "    brcc 17f\n"
+      "    dec  r31\n"                    // negative: c - 1, R3 + t(c - 1)
+      "    mov  r26, r31\n"
+      "    mov  r27, r21\n"
+      "    mov  r24, r19\n"
+      "    clr  r25\n"
+      "    sec\n"
+      "    rol  r26\n"
+      "    rol  r27\n"
+      "    rol  r24\n"
+      "    rol  r25\n"
+      "    add  r30, r26\n"
+      "    adc  r1, r27\n"
+      "    adc  r22, r24\n"
+      "    adc  r23, r25\n"
+      "    rjmp 18f\n"
+      "17:\n"
+      "    mov  r26, r31\n"
+      "    mov  r27, r21\n"
+      "    mov  r24, r19\n"
+      "    clr  r25\n"
+      "    sec\n"
+      "    rol  r26\n"
+      "    rol  r27\n"
+      "    rol  r24\n"
+      "    rol  r25\n"
+      "    cp   r30, r26\n"
+      "    cpc  r1, r27\n"
+      "    cpc  r22, r24\n"
+      "    cpc  r23, r25\n"
+      "    brcs 18f\n"
+      "    cpi  r31, 0xff\n"
+      "    breq 18f\n"
+      "    inc  r31\n"
+      "    sub  r30, r26\n"
+      "    sbc  r1, r27\n"
+      "    sbc  r22, r24\n"
+      "    sbc  r23, r25\n"
+      "18:\n"
+      // r = a:b:c (r19:r21:r31). e == 0: round up when R3 > r; else shift
+      // right by e, rounding with the last bit out.
+      "    tst  r18\n"
+      "    brne 19f\n"
+      "    clr  r24\n"
+      "    cp   r31, r30\n"
+      "    cpc  r21, r1\n"
+      "    cpc  r19, r22\n"
+      "    cpc  r24, r23\n"
+      "    rjmp 20f\n"
+      "19:\n"
+      "    lsr  r19\n"
+      "    ror  r21\n"
+      "    ror  r31\n"
+      "    dec  r18\n"
+      "    brne 19b\n"
+      "20:\n"
+      "    mov  r22, r31\n"
+      "    mov  r23, r21\n"
+      "    mov  r24, r19\n"
+      "    clr  r25\n"
+      "    clr  r1\n"
+      "    adc  r22, r1\n"
+      "    adc  r23, r1\n"
+      "    adc  r24, r1\n"
+      "    ret\n"
+
+      ::: "memory");
+}
+
+// ---------------------------------------------------------------------------
+// atan2(y, x) in units of 2^-16 rad, in [-pi, pi], atan2(0, 0) = 0: the
+// computation of FixedMath.hpp's portable atan2Units in assembly, with the
+// normalizing shifts done as multiplies and no 32-bit loops.
+// ---------------------------------------------------------------------------
+__attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
+                                                               int32_t) {
+  asm volatile(
+      // y in r25:r22, x in r21:r18 (signed). r17 keeps the signs: bit 7 for
+      // y < 0, bit 0 for x < 0.
+      "    push r17\n"
+      "    mov  r17, r25\n"
+      "    andi r17, 0x80\n"
+      "    sbrc r21, 7\n"
+      "    ori  r17, 0x01\n"
+      "    sbrs r25, 7\n"
+      "    rjmp 13f\n"
+      "    com  r25\n"
+      "    com  r24\n"
+      "    com  r23\n"
+      "    neg  r22\n"
+      "    sbci r23, 0xff\n"
+      "    sbci r24, 0xff\n"
+      "    sbci r25, 0xff\n"
+      "13:\n"
+      "    sbrs r21, 7\n"
+      "    rjmp 14f\n"
+      "    com  r21\n"
+      "    com  r20\n"
+      "    com  r19\n"
+      "    neg  r18\n"
+      "    sbci r19, 0xff\n"
+      "    sbci r20, 0xff\n"
+      "    sbci r21, 0xff\n"
+      "14:\n"
+      // |y| in r25:r22, |x| in r21:r18: the larger goes to r25:r22; T set
+      // when that was |x| (the angle is below pi / 4).
+      "    clt\n"
+      "    cp   r22, r18\n"
+      "    cpc  r23, r19\n"
+      "    cpc  r24, r20\n"
+      "    cpc  r25, r21\n"
+      "    brcc 1f\n"
+      "    set\n"
+      "    movw r26, r22\n"
+      "    movw r30, r24\n"
+      "    movw r22, r18\n"
+      "    movw r24, r20\n"
+      "    movw r18, r26\n"
+      "    movw r20, r30\n"
+      "1:\n"
+      // big in r25:r22, small in r21:r18. Window of three bytes from the top
+      // nonzero byte of big: big in r25:r24:r23, small in r21:r20:r19.
+      "    tst  r25\n"
+      "    brne 3f\n"
+      "    mov  r25, r24\n"
+      "    mov  r24, r23\n"
+      "    mov  r23, r22\n"
+      "    mov  r21, r20\n"
+      "    mov  r20, r19\n"
+      "    mov  r19, r18\n"
+      "    tst  r25\n"
+      "    brne 3f\n"
+      "    mov  r25, r24\n"
+      "    mov  r24, r23\n"
+      "    clr  r23\n"
+      "    mov  r21, r20\n"
+      "    mov  r20, r19\n"
+      "    clr  r19\n"
+      "    tst  r25\n"
+      "    brne 3f\n"
+      "    mov  r25, r24\n"
+      "    clr  r24\n"
+      "    mov  r21, r20\n"
+      "    clr  r20\n"
+      "    tst  r25\n"
+      "    brne 3f\n"
+      // Both zero: atan2(0, 0) = 0 (r25:r22 is zero here).
+      "    pop  r17\n"
+      "    ret\n"
+      "3:\n"
+      // m = 2^(leading zeros of the top byte) in r30: 4, 2, 1 bits.
+      "    ldi  r30, 1\n"
+      "    mov  r31, r25\n"
+      "    cpi  r31, 0x10\n"
+      "    brcc 4f\n"
+      "    swap r31\n"
+      "    ldi  r30, 16\n"
+      "4:\n"
+      "    cpi  r31, 0x40\n"
+      "    brcc 5f\n"
+      "    lsl  r31\n"
+      "    lsl  r31\n"
+      "    lsl  r30\n"
+      "    lsl  r30\n"
+      "5:\n"
+      "    sbrs r31, 7\n"
+      "    lsl  r30\n"
+      // big16 = (window * m) >> 8 in r27:r26 (truncated: the ratio moves by
+      // at most 2^-15 of itself); small16 likewise in r25:r24, at most big16.
+      // r31 = 0.
+      "    clr  r31\n"
+      "    mul  r23, r30\n"
+      "    mov  r26, r1\n"
+      "    mul  r24, r30\n"
+      "    add  r26, r0\n"
+      "    mov  r27, r1\n"
+      "    adc  r27, r31\n"
+      "    mul  r25, r30\n"
+      "    add  r27, r0\n"
+      "    brcc 6f\n"
+      "    ldi  r26, 0xff\n"
+      "    ldi  r27, 0xff\n"
+      "6:\n"
+      "    mul  r19, r30\n"
+      "    mov  r24, r1\n"
+      "    mul  r20, r30\n"
+      "    add  r24, r0\n"
+      "    mov  r25, r1\n"
+      "    adc  r25, r31\n"
+      "    mul  r21, r30\n"
+      "    add  r25, r0\n"
+      "    brcs 7f\n"
+      "    cp   r26, r24\n"
+      "    cpc  r27, r25\n"
+      "    brcc 8f\n"
+      "7:\n"
+      "    movw r24, r26\n"
+      "8:\n"
+      // r = 2^32 / big16 - 2^16 (about), kRecip interpolated: r19:r18.
+      "    mov  r30, r27\n"
+      "    andi r30, 0x7f\n"
+      "    lsl  r30\n"
+      "    clr  r31\n"
+      "    subi r30, lo8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    sbci r31, hi8(-(" TINYPARTICLE_AVR_RECIP "))\n"
+      "    lpm  r18, Z+\n"
+      "    lpm  r19, Z+\n"
+      "    lpm  r20, Z+\n"
+      "    lpm  r21, Z\n"
+      "    clr  r31\n"
+      "    sub  r20, r18\n"
+      "    sbc  r21, r19\n"
+      "    com  r21\n"
+      "    neg  r20\n"
+      "    sbci r21, 0xff\n"
+      "    mul  r20, r26\n"
+      "    mov  r30, r1\n"
+      "    mul  r21, r26\n"
+      "    add  r30, r0\n"
+      "    clr  r27\n"
+      "    adc  r27, r1\n"
+      "    sub  r18, r30\n"
+      "    sbc  r19, r27\n"
+      // t = small16 + (small16 * r + 2^15) >> 16 = small / big * 2^16 in
+      // r30:r21 (without the low product: at most one unit less); from 2^16
+      // on, atan is pi / 4.
+      "    ldi  r20, 0x80\n"
+      "    clr  r21\n"
+      "    clr  r30\n"
+      "    mul  r24, r19\n"
+      "    add  r20, r0\n"
+      "    adc  r21, r1\n"
+      "    adc  r30, r31\n"
+      "    mul  r25, r18\n"
+      "    add  r20, r0\n"
+      "    adc  r21, r1\n"
+      "    adc  r30, r31\n"
+      "    mul  r25, r19\n"
+      "    add  r21, r0\n"
+      "    adc  r30, r1\n"
+      "    add  r21, r24\n"
+      "    adc  r30, r25\n"
+      "    brcc 9f\n"
+      "    ldi  r18, lo8(51472)\n"
+      "    ldi  r19, hi8(51472)\n"
+      "    rjmp 11f\n"
+      "9:\n"
+      // atan(t / 2^16) from kAtan: entry t >> 9, fraction bits 1..8 of t
+      // (the lowest bit moves the result by at most half a unit).
+      "    mov  r27, r30\n"
+      "    lsr  r30\n"
+      "    lsl  r30\n"
+      "    clr  r31\n"
+      "    subi r30, lo8(-(" TINYPARTICLE_AVR_ATAN "))\n"
+      "    sbci r31, hi8(-(" TINYPARTICLE_AVR_ATAN "))\n"
+      "    lpm  r18, Z+\n"
+      "    lpm  r19, Z+\n"
+      "    lpm  r22, Z+\n"
+      "    lpm  r23, Z\n"
+      "    sub  r22, r18\n"
+      "    sbc  r23, r19\n"
+      "    lsr  r27\n"
+      "    ror  r21\n"
+      "    mul  r22, r21\n"
+      "    mov  r24, r1\n"
+      "    sbrc r0, 7\n"
+      "    inc  r24\n"
+      "    mul  r23, r21\n"
+      "    add  r24, r0\n"
+      "    clr  r25\n"
+      "    adc  r25, r1\n"
+      "    add  r18, r24\n"
+      "    adc  r19, r25\n"
+      "11:\n"
+      // a = atan in r19:r18. Not T (the larger was |y|): pi / 2 - a,
+      // 102944 = round(pi / 2 * 2^16). Result in r24:r23:r22.
+      "    clr  r1\n"
+      "    clr  r24\n"
+      "    movw r22, r18\n"
+      "    brts 12f\n"
+      "    ldi  r22, 0x20\n"
+      "    ldi  r23, 0x92\n"
+      "    ldi  r24, 0x01\n"
+      "    sub  r22, r18\n"
+      "    sbc  r23, r19\n"
+      "    sbci r24, 0\n"
+      "12:\n"
+      // x < 0: pi - a (205887 = 0x3243f); y < 0: -a.
+      "    clr  r25\n"
+      "    sbrs r17, 0\n"
+      "    rjmp 15f\n"
+      "    ldi  r18, 0x3f\n"
+      "    ldi  r19, 0x24\n"
+      "    ldi  r20, 0x03\n"
+      "    sub  r18, r22\n"
+      "    sbc  r19, r23\n"
+      "    sbc  r20, r24\n"
+      "    movw r22, r18\n"
+      "    mov  r24, r20\n"
+      "15:\n"
+      "    sbrs r17, 7\n"
+      "    rjmp 16f\n"
+      "    com  r25\n"
+      "    com  r24\n"
+      "    com  r23\n"
+      "    neg  r22\n"
+      "    sbci r23, 0xff\n"
+      "    sbci r24, 0xff\n"
+      "    sbci r25, 0xff\n"
+      "16:\n"
+      "    pop  r17\n"
+      "    ret\n"
+
+      ::: "memory");
+}
+
+template <>
+struct FixedFast<16, 16> {
+  typedef int32_t Raw;
+  TINYPARTICLE_ALWAYS_INLINE static Raw multiply(Raw a, Raw b) {
+    flagsTouched();
+    Raw r = avrMultiplyQ16(a, b);
+    flagsTouched();
+    return r;
+  }
+  // Member templates (U is always void): the tables are then instantiated,
+  // and linked, only by a sketch that divides or takes a square root.
+  template <typename U = void>
+  TINYPARTICLE_ALWAYS_INLINE static Raw divide(Raw a, Raw b) {
+    // Tell the compiler that the assembly reads kRecip, so that it keeps
+    // the table (it cannot see the reference by name either).
+    asm volatile("" : : "m"(TrigTables<U>::kRecip[0]));
+    flagsTouched();
+    Raw r = avrDivideQ16(a, b);
+    flagsTouched();
+    return r;
+  }
+  template <typename U = void>
+  TINYPARTICLE_ALWAYS_INLINE static Raw squareRoot(Raw x) {
+    asm volatile("" : : "m"(TrigTables<U>::kRecip[0]), "m"(TrigTables<U>::kSqrt[0]));
+    return avrSquareRoot(x, 0);  // raises no flag
+  }
+};
+
+// Q24.8 on the Q16.16 routines: a * b / 2^8 = a * (b * 2^8) / 2^16 and
+// a * 2^8 / b = a * 2^16 / (b * 2^8) exactly, so rounding, saturation and
+// flags are the same as the reference's whenever b * 2^8 fits (|b| below
+// 2^23 steps, i.e. 32768.0); else the other operand is scaled, or the
+// reference code runs (division by 32768.0 or more).
+template <>
+struct FixedFast<24, 8> {
+  typedef int32_t Raw;
+  static bool small(Raw x) { return x >= -0x800000l && x < 0x800000l; }
+  TINYPARTICLE_ALWAYS_INLINE static Raw multiply(Raw a, Raw b) {
+    if (small(b)) return FixedFast<16, 16>::multiply(a, b * 256);
+    if (small(a)) return FixedFast<16, 16>::multiply(b, a * 256);
+    // Both at least 2^23 steps: the product is at least 2^38 steps.
+    return Q24_8::overflow((a < 0) != (b < 0));
+  }
+  template <typename U = void>
+  TINYPARTICLE_ALWAYS_INLINE static Raw divide(Raw a, Raw b) {
+    if (small(b)) return FixedFast<16, 16>::divide<U>(a, b * 256);
+    return Q24_8::referenceDivide(a, b);
+  }
+  template <typename U = void>
+  TINYPARTICLE_ALWAYS_INLINE static Raw squareRoot(Raw x) {
+    asm volatile("" : : "m"(TrigTables<U>::kRecip[0]), "m"(TrigTables<U>::kSqrt[0]));
+    return avrSquareRoot(x, 4);  // sqrt(x * 2^16) / 16 = sqrt(x * 2^8)
+  }
+};
+
+// Q8.8 divide and square root likewise (b * 2^8 always fits 32 bits); the
+// 32-bit result is then saturated to 16 bits.
+template <>
+struct FixedFast<8, 8> {
+  typedef int16_t Raw;
+  static Raw narrow(int32_t r) {
+    if (r > INT16_MAX) return Q8_8::overflow(false);
+    if (r < INT16_MIN) return Q8_8::overflow(true);
+    return Raw(r);
+  }
+  // A 16 x 16 product: the portable code is already a 32-bit multiply
+  // (a library routine of four MULs), faster than the Q16.16 path here.
+  static Raw multiply(Raw a, Raw b) { return Q8_8::referenceMultiply(a, b); }
+  template <typename U = void>
+  TINYPARTICLE_ALWAYS_INLINE static Raw divide(Raw a, Raw b) {
+    return narrow(FixedFast<16, 16>::divide<U>(a, int32_t(b) * 256));
+  }
+  template <typename U = void>
+  TINYPARTICLE_ALWAYS_INLINE static Raw squareRoot(Raw x) {
+    asm volatile("" : : "m"(TrigTables<U>::kRecip[0]), "m"(TrigTables<U>::kSqrt[0]));
+    return Raw(avrSquareRoot(x, 4));  // at most 2^11.5: fits
+  }
+};
+
+}  // namespace detail
+
+}  // namespace tinyparticle
+
+#endif  // __AVR__ && __AVR_HAVE_MUL__

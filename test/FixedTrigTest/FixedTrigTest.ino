@@ -1,0 +1,209 @@
+// Fixed trigonometry against the C library: sinTurns/cosTurns (binary
+// angles), sin/cos (radians), atan2, radiansToTurns and atan2Turns.
+// Q16_16 must be within 1e-4 of the exact value (the goal; the tables are
+// built for about 4e-5: interpolation error <= 2.1 steps of 2^-16 plus the
+// final rounding); Q24_8 and Q8_8 within one step of their format.
+// The host compares with double over every binary angle and the whole
+// range of arguments; the Nano with avr-libc's float functions, where
+// float represents the argument exactly (|x| < 256 in Q16_16).
+#include <AUnit.h>
+#include <TinyParticle.h>
+#include <math.h>
+
+using aunit::TestRunner;
+
+#if defined(EPOXY_DUINO)
+const uint16_t kAngleStride = 1;     // every binary angle
+const uint32_t kRandomArguments = 200000;
+typedef double Exact;
+#else
+const uint16_t kAngleStride = 97;
+const uint32_t kRandomArguments = 400;
+typedef float Exact;
+#endif
+
+static const Exact kTwoPi = Exact(6.283185307179586);
+
+static uint32_t gState = 362436069ul;
+static uint32_t nextRandom() {
+  uint32_t x = gState;
+  x ^= x << 13;
+  x ^= x >> 17;
+  x ^= x << 5;
+  return gState = x;
+}
+
+template <typename T>
+struct Trig {
+  typedef typename T::Raw Raw;
+
+  static Exact value(T x) {
+    return Exact(x.raw()) / Exact(int32_t(1) << T::kFracBits);
+  }
+  static Exact distance(T x, Exact exact) {
+    Exact d = value(x) - exact;
+    return d < 0 ? -d : d;
+  }
+
+  // Largest error of sinTurns/cosTurns over binary angles.
+  static Exact turnsError() {
+    Exact worst = 0;
+    for (uint32_t a = 0; a < 65536ul; a += kAngleStride) {
+      const uint16_t t = uint16_t(a);
+      const Exact angle = Exact(a) * kTwoPi / Exact(65536.0);
+      const Exact es = distance(sinTurns<T>(t), sin(angle));
+      const Exact ec = distance(cosTurns<T>(t), cos(angle));
+      if (es > worst) worst = es;
+      if (ec > worst) worst = ec;
+    }
+    return worst;
+  }
+
+  // A raw argument whose value the reference type represents exactly.
+  static Raw randomAngle(uint8_t maxBits) {
+    const uint8_t bits = uint8_t(nextRandom() % (maxBits + 1));
+    const uint32_t m = bits == 0 ? 0 : nextRandom() >> (32 - bits);
+    return (nextRandom() & 1) ? Raw(-int32_t(m)) : Raw(m);
+  }
+
+  // Largest error of sin and cos over random radian arguments of up to
+  // maxBits raw bits, and the largest binary-angle error of radiansToTurns
+  // (in binary-angle units).
+  static Exact radiansError(uint8_t maxBits, uint16_t* turnsError) {
+    Exact worst = 0;
+    *turnsError = 0;
+    for (uint32_t i = 0; i < kRandomArguments; ++i) {
+      const T x = T::fromRaw(randomAngle(maxBits));
+      const Exact v = value(x);
+      const Exact es = distance(sin(x), sin(v));
+      const Exact ec = distance(cos(x), cos(v));
+      if (es > worst) worst = es;
+      if (ec > worst) worst = ec;
+      // Binary angle: v / 2 pi * 65536 rounded, modulo one turn.
+      Exact turns = v / kTwoPi * Exact(65536.0);
+      turns -= Exact(65536.0) * floor(turns / Exact(65536.0));
+      const uint16_t expected = uint16_t(uint32_t(turns + Exact(0.5)) & 0xffffu);
+      const uint16_t got = radiansToTurns(x);
+      const uint16_t diff = uint16_t(got - expected);
+      const uint16_t off = diff < 32768u ? diff : uint16_t(0u - diff);
+      if (off > *turnsError) *turnsError = off;
+    }
+    return worst;
+  }
+
+  // Largest error of atan2 over (y, x) on a grid of magnitudes from one
+  // step to the top of the range, every sign, and random pairs; and of
+  // atan2Turns, in binary-angle units.
+  static Exact atan2Error(uint16_t* turnsError) {
+    Exact worst = 0;
+    *turnsError = 0;
+    for (uint32_t i = 0; i < kRandomArguments * 4; ++i) {
+      const Raw y = randomAngle(T::kTotalBits - 1);
+      const Raw x = randomAngle(T::kTotalBits - 1);
+      check(T::fromRaw(y), T::fromRaw(x), &worst, turnsError);
+    }
+    for (uint8_t i = 0; i < T::kTotalBits - 1; i += 3) {
+      for (uint8_t j = 0; j < T::kTotalBits - 1; j += 3) {
+        const Raw a = Raw((int32_t(1) << i) + i);
+        const Raw b = Raw((int32_t(1) << j) - 1 + j);
+        for (uint8_t s = 0; s < 4; ++s) {
+          check(T::fromRaw((s & 1) ? Raw(-a) : a),
+                T::fromRaw((s & 2) ? Raw(-b) : b), &worst, turnsError);
+        }
+      }
+    }
+    return worst;
+  }
+
+  static void check(T y, T x, Exact* worst, uint16_t* turnsError) {
+    const Exact exact = atan2(value(y), value(x));
+    const Exact e = distance(atan2(y, x), exact);
+    if (e > *worst) *worst = e;
+    Exact turns = exact / kTwoPi * Exact(65536.0);
+    if (turns < 0) turns += Exact(65536.0);
+    const uint16_t expected = uint16_t(uint32_t(turns + Exact(0.5)) & 0xffffu);
+    const uint16_t diff = uint16_t(atan2Turns(y, x) - expected);
+    const uint16_t off = diff < 32768u ? diff : uint16_t(0u - diff);
+    if (off > *turnsError) *turnsError = off;
+  }
+};
+
+test(q16_16SinCosTurns) {
+  assertLess(Trig<Q16_16>::turnsError(), Exact(1e-4));
+}
+
+test(q16_16SinCosRadians) {
+  uint16_t turns;
+  // Float holds Q16_16 values exactly below 256 (24 bits).
+  assertLess(Trig<Q16_16>::radiansError(23, &turns), Exact(1e-4));
+  assertLessOrEqual(turns, (uint16_t) 1);
+#if defined(EPOXY_DUINO)
+  // The whole range (double is exact for every Q16_16 value).
+  assertLess(Trig<Q16_16>::radiansError(31, &turns), Exact(1e-4));
+  assertLessOrEqual(turns, (uint16_t) 1);
+#endif
+}
+
+test(q16_16Atan2) {
+  uint16_t turns;
+  assertLess(Trig<Q16_16>::atan2Error(&turns), Exact(1e-4));
+  // 1e-4 rad is 1.04 binary-angle units; with the final rounding, 2.
+  assertLessOrEqual(turns, (uint16_t) 2);
+}
+
+test(q24_8AndQ8_8WithinOneStep) {
+  const Exact step = Exact(1) / 256;
+  uint16_t turns;
+  assertLessOrEqual(Trig<Q24_8>::turnsError(), step);
+  assertLessOrEqual(Trig<Q8_8>::turnsError(), step);
+  assertLessOrEqual(Trig<Q24_8>::radiansError(23, &turns), step);
+  assertLessOrEqual(Trig<Q8_8>::radiansError(15, &turns), step);
+  assertLessOrEqual(Trig<Q24_8>::atan2Error(&turns), step);
+  assertLessOrEqual(Trig<Q8_8>::atan2Error(&turns), step);
+}
+
+test(exactAnglesAndSpecialCases) {
+  typedef Q16_16 T;
+  assertTrue(sinTurns<T>(0) == T(0));
+  assertTrue(sinTurns<T>(16384) == T(1));
+  assertTrue(sinTurns<T>(32768) == T(0));
+  assertTrue(sinTurns<T>(49152) == T(-1));
+  assertTrue(cosTurns<T>(0) == T(1));
+  assertTrue(cosTurns<T>(32768) == T(-1));
+  assertTrue(sinTurns<Q8_8>(16384) == Q8_8(1));
+  // |sin| <= 1 at every angle, and sin(-a) = -sin(a) exactly.
+  uint16_t bad = 0;
+  for (uint32_t a = 0; a < 65536ul; a += 61) {
+    const T s = sinTurns<T>(uint16_t(a));
+    if (fabs(s) > T(1) || sinTurns<T>(uint16_t(0u - a)) != -s) ++bad;
+  }
+  assertEqual(bad, (uint16_t) 0);
+  // atan2 follows C: atan2(0, 0) = 0, atan2(0, -x) = pi, quadrants.
+  clearMathErrors();
+  assertTrue(atan2(T(0), T(0)) == T(0));
+  assertTrue(atan2(T(0), T(-2)) == T::pi());
+  assertTrue(atan2(T(0), T(3)) == T(0));
+  assertNear(atan2(T(1), T(0)).toFloat(), 1.5707963f, 1e-4f);
+  assertNear(atan2(T(-1), T(0)).toFloat(), -1.5707963f, 1e-4f);
+  assertNear(atan2(T(-1), T(-1)).toFloat(), -2.3561945f, 1e-4f);
+  assertNear(atan2(T::lowest(), T::lowest()).toFloat(), -2.3561945f, 1e-4f);
+  assertEqual(atan2Turns(T(0), T(-1)), (uint16_t) 32768);
+  assertEqual(atan2Turns(T(-1), T(0)), (uint16_t) 49152);
+  assertEqual(mathErrors(), (uint8_t) 0);
+  // pi does not fit Fixed<2, 30>: atan2 saturates, with the flag.
+  typedef Fixed<2, 30> Tiny;
+  assertTrue(atan2(Tiny(0), Tiny(-1)) == (Tiny::max)());
+  assertEqual(mathErrors(), (uint8_t) MathError::kOverflow);
+  clearMathErrors();
+}
+
+void setup() {
+#if !defined(EPOXY_DUINO)
+  delay(1000);
+#endif
+  Serial.begin(115200);
+  while (!Serial);
+  TestRunner::setTimeout(0);
+}
+
+void loop() { TestRunner::run(); }
