@@ -24,9 +24,34 @@ template struct Vec<Q8_8, 2>;
 template struct Vec<Q8_8, 3>;
 template struct Vec<Float, 2>;
 template struct Vec<Float, 3>;
+// Formats beyond the named ones: the widest fraction, a 16-bit one.
+template class Fixed<2, 30>;
+template class Fixed<4, 12>;
+template struct Vec<Fixed<2, 30>, 3>;
 
 // ---- World, Forces, Contacts, Render, Loop, Scenes ----------------------
 // (append here)
+// Every member of World, so every generator its add functions reference,
+// for each scalar and dimension; and the empty-pool corner (capacity 0).
+template struct Particle<Q16_16, 2>;
+template struct Particle<Float, 3>;
+template struct Contact<Q16_16, 2>;
+template class World<Q16_16, 2, 4, 4, 4, 4>;
+template class World<Q16_16, 3, 4, 4, 4, 4>;
+template class World<Q24_8, 2, 4, 4, 4, 4>;
+template class World<Q24_8, 3, 4, 4, 4, 4>;
+template class World<Float, 2, 4, 4, 4, 4>;
+template class World<Float, 3, 4, 4, 4, 4>;
+template class World<Q16_16, 2, 1>;
+template class World<Float, 3, 1>;
+template class World<Q16_16, 2, 0, 0, 0, 0>;
+template class AsciiRenderer<World<Q16_16, 2, 4, 4, 4, 4> >;
+template class AsciiRenderer<World<Float, 3, 4, 4, 4, 4>, 80, 25>;
+template class AsciiRenderer<World<Q16_16, 2, 1> >;
+struct CheckClock {
+  static uint32_t micros() { return 0; }
+};
+template class BasicRealTimeLoop<CheckClock>;
 
 }  // namespace tinyparticle
 
@@ -44,3 +69,75 @@ template tinyparticle::Q16_16 checkVectorFunctions<tinyparticle::Q16_16>();
 template tinyparticle::Q24_8 checkVectorFunctions<tinyparticle::Q24_8>();
 template tinyparticle::Q8_8 checkVectorFunctions<tinyparticle::Q8_8>();
 template tinyparticle::Float checkVectorFunctions<tinyparticle::Float>();
+
+// World, Forces, Contacts, Render, Loop, Scenes: stepping, drawing and the
+// scene builders for each scalar and dimension. Not meant to run.
+template <typename S, uint8_t D>
+void checkEngine() {
+  typedef tinyparticle::World<S, D, 4, 4, 4, 4> W;
+  static W world;
+  static typename W::Vec push;
+  world.step(S(1.0 / 256));
+  world.step(S(1.0 / 256), 2);
+  struct Sink {
+    size_t write(uint8_t) { return 1; }
+  } sink;
+  tinyparticle::AsciiRenderer<W> renderer(S(0), S(0), S(0.1), S(0.2));
+  renderer.draw(world, sink);
+  static tinyparticle::LeverWorld<S, D> lever;
+  buildLever(lever, &push);
+  lever.step(S(1.0 / 256));
+  static tinyparticle::PendulumWorld<S, D> pendulum;
+  buildPendulum(pendulum, S(1), S(0.2), S(1));
+  static tinyparticle::SpringWorld<S, D> spring;
+  buildSpring(spring);
+  static tinyparticle::BallsWorld<S, D, 4, 8> balls;
+  buildBouncingBalls(balls, 4);
+  balls.step(S(1.0 / 256));
+  static tinyparticle::World<S, D, 1> bare;
+  bare.step(S(1.0 / 256));
+}
+
+template void checkEngine<tinyparticle::Q16_16, 2>();
+template void checkEngine<tinyparticle::Q16_16, 3>();
+template void checkEngine<tinyparticle::Q24_8, 2>();
+template void checkEngine<tinyparticle::Float, 2>();
+template void checkEngine<tinyparticle::Float, 3>();
+
+// Math: every free function of the scalar interface, for each scalar.
+template <typename S>
+S checkScalarFunctions() {
+  S a(0.5), b(-2);
+  uint16_t t = radiansToTurns(a);
+  S r = fabs(b) + fmin(a, b) + fmax(a, b) + clamp(a, b, S(1));
+  r += sqrt(a) + atan2(a, b) + sin(a) + cos(b);
+  r += tinyparticle::sinTurns<S>(t) + tinyparticle::cosTurns<S>(uint16_t(t + 1));
+  r += S::pi() + S::epsilon() + (S::max)() + S::largest() + S::lowest();
+  tinyparticle::Vec3<S> v(a, b, r);
+  tinyparticle::Vec2<S> w(a, b);
+  r += v.magnitudeAndNormalize() + w.magnitudeAndNormalize();
+  return r + S(v.normalize() && w.normalize() ? 1 : 0);
+}
+
+template tinyparticle::Q16_16 checkScalarFunctions<tinyparticle::Q16_16>();
+template tinyparticle::Q24_8 checkScalarFunctions<tinyparticle::Q24_8>();
+template tinyparticle::Q8_8 checkScalarFunctions<tinyparticle::Q8_8>();
+template tinyparticle::Float checkScalarFunctions<tinyparticle::Float>();
+template tinyparticle::Fixed<2, 30>
+checkScalarFunctions<tinyparticle::Fixed<2, 30> >();
+template tinyparticle::Fixed<4, 12>
+checkScalarFunctions<tinyparticle::Fixed<4, 12> >();
+
+// Fixed only: the raw operations and binary-angle atan2.
+template <uint8_t I, uint8_t F>
+int32_t checkFixedFunctions() {
+  typedef tinyparticle::Fixed<I, F> T;
+  typename T::Raw x = T::referenceMultiply(1, 2) + T::referenceDivide(3, 4);
+  x += T::referenceSquareRoot(5) + T::squareRoot(6) + T::multiply(7, 8);
+  return x + T::divide(9, 10) + atan2Turns(T(1), T(-1)) + T(2).toInt();
+}
+
+template int32_t checkFixedFunctions<16, 16>();
+template int32_t checkFixedFunctions<24, 8>();
+template int32_t checkFixedFunctions<8, 8>();
+template int32_t checkFixedFunctions<2, 30>();

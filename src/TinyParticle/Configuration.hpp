@@ -6,7 +6,8 @@
 #include <stdint.h>
 
 // TINYPARTICLE_AVR_ASM: 1 uses hand-written AVR code for fixed-point
-// multiply, divide and square root on chips with a hardware multiplier;
+// multiply, divide, square root and atan2 on chips with a hardware
+// multiplier, and for saturating + and - on any AVR (Math/FixedAvr.hpp);
 // 0 uses the portable C++ code everywhere (the reference in the tests).
 // Default: 1 on AVR with MUL, 0 elsewhere.
 #ifndef TINYPARTICLE_AVR_ASM

@@ -1,0 +1,140 @@
+// A real-time stepping loop: fixed physics steps that keep up with a clock,
+// and a frame rate for rendering.
+//
+//   RealTimeLoop timing(256, 10);   // dt = 1/256 s, 10 frames per second
+//   void loop() {
+//     for (uint8_t n = timing.stepsDue(); n > 0; --n) world.step(kDt);
+//     if (timing.frameDue()) renderer.draw(world, Serial);
+//   }
+//
+// Compared with the seed (section 3.3), whose step length followed the time
+// the last frame took: the step is always the same dt, so the simulation
+// does not depend on how fast the board or the serial line is; when the
+// sketch falls behind it catches up with at most maxCatchUp steps per call
+// and then lets the clock slip (counted in slippedSteps()) instead of
+// spiralling; a frame waits until the physics has caught up, but never more
+// than one extra frame period; and nothing busy-waits unless the sketch asks
+// for it with waitForStep(), which waits at most one step.
+//
+// The schedule is exact over time: a step period that is not a whole number
+// of microseconds (1/256 s = 3906.25 us) carries its fraction.
+#pragma once
+
+#include <stdint.h>
+
+#include "../Platform/Clock.hpp"
+
+namespace tinyparticle {
+
+template <class Clock>
+class BasicRealTimeLoop {
+ public:
+  // stepsPerSecond: 1 / dt (> 0). framesPerSecond: 0 for no frames.
+  BasicRealTimeLoop(uint16_t stepsPerSecond, uint16_t framesPerSecond,
+                    uint8_t maxCatchUp = 8)
+      : mStepWhole(1000000UL / stepsPerSecond),
+        mStepFraction(uint16_t(1000000UL % stepsPerSecond)),
+        mStepsPerSecond(stepsPerSecond),
+        mFramePeriod(framesPerSecond == 0 ? 0 : 1000000UL / framesPerSecond),
+        mMaxCatchUp(maxCatchUp == 0 ? 1 : maxCatchUp),
+        mFractionSum(0),
+        mNextStep(0),
+        mNextFrame(0),
+        mSteps(0),
+        mSlipped(0),
+        mStarted(false) {}
+
+  // Starts the schedule now (stepsDue() also does this on its first call).
+  void start() {
+    const uint32_t now = Clock::micros();
+    mNextStep = now;
+    mNextFrame = now;
+    mFractionSum = 0;
+    mStarted = true;
+  }
+
+  // The number of steps to run now, 0 to maxCatchUp. If even more are due,
+  // the backlog is dropped and the schedule restarts from now.
+  uint8_t stepsDue() {
+    if (!mStarted) start();
+    const uint32_t now = Clock::micros();
+    uint8_t due = 0;
+    while (due < mMaxCatchUp && reached(now, mNextStep)) {
+      advanceStep();
+      ++due;
+    }
+    if (reached(now, mNextStep)) {
+      // Still behind after the most we may run: let the clock slip.
+      const uint32_t late = now - mNextStep;
+      mSlipped += late / mStepWhole + 1;
+      mNextStep = now;
+      advanceStep();
+    }
+    mSteps += due;
+    return due;
+  }
+
+  // True when a frame should be drawn: its time has come and no step is
+  // due (or it has already waited a whole extra frame period).
+  bool frameDue() {
+    if (mFramePeriod == 0 || !mStarted) return false;
+    const uint32_t now = Clock::micros();
+    if (!reached(now, mNextFrame)) return false;
+    const bool behind = reached(now, mNextStep);
+    if (behind && now - mNextFrame < mFramePeriod) return false;
+    mNextFrame += mFramePeriod;
+    if (reached(now, mNextFrame)) mNextFrame = now + mFramePeriod;
+    return true;
+  }
+
+  // Waits until the next step is due: at most one step period.
+  void waitForStep() const {
+    while (!reached(Clock::micros(), mNextStep)) {
+    }
+  }
+
+  // Microseconds until the next step is due (0 if it is due).
+  uint32_t microsToNextStep() const {
+    const uint32_t now = Clock::micros();
+    return reached(now, mNextStep) ? 0 : mNextStep - now;
+  }
+
+  uint32_t steps() const { return mSteps; }
+  // Steps that were due but never run, because the sketch fell behind.
+  uint32_t slippedSteps() const { return mSlipped; }
+  uint16_t stepsPerSecond() const { return mStepsPerSecond; }
+
+ private:
+  // now >= t on a wrapping clock (valid for spans below 35 minutes).
+  static bool reached(uint32_t now, uint32_t t) {
+    return (now - t) < 0x80000000UL;
+  }
+
+  void advanceStep() {
+    mNextStep += mStepWhole;
+    uint32_t sum = uint32_t(mFractionSum) + mStepFraction;
+    if (sum >= mStepsPerSecond) {
+      sum -= mStepsPerSecond;
+      ++mNextStep;
+    }
+    mFractionSum = uint16_t(sum);
+  }
+
+  const uint32_t mStepWhole;      // whole microseconds per step
+  const uint16_t mStepFraction;   // and this many 1/stepsPerSecond us
+  const uint16_t mStepsPerSecond;
+  const uint32_t mFramePeriod;    // us, 0: no frames
+  const uint8_t mMaxCatchUp;
+  uint16_t mFractionSum;
+  uint32_t mNextStep;
+  uint32_t mNextFrame;
+  uint32_t mSteps;
+  uint32_t mSlipped;
+  bool mStarted;
+};
+
+#if TINYPARTICLE_HAS_ARDUINO
+typedef BasicRealTimeLoop<ArduinoClock> RealTimeLoop;
+#endif
+
+}  // namespace tinyparticle

@@ -1,0 +1,226 @@
+// ASCII renderer: draws a world as text over any Print-like output (any type
+// with write(uint8_t), such as Serial), line by line. It never holds a frame:
+// only one line of kColumns characters, on the stack while that line is
+// drawn, so a 40 x 20 view costs 41 bytes of stack instead of the seed's
+// frame buffer.
+//
+// It shows the rectangle whose bottom-left corner is (left, bottom), each
+// character cellWidth x cellHeight metres (terminal characters are about
+// twice as tall as wide, so cellHeight = 2 cellWidth keeps circles round).
+// A 3D world is seen along z (its x-y projection).
+//
+//   'O' a movable particle, filled to its radius ('o' if smaller than a cell)
+//   '+' an immovable particle
+//   '.' a rod, cable, spring, bungee or stiff spring (to its anchor, too)
+//
+// Draw a whole frame with draw(), or one line per call with drawLine() so
+// that a sketch never waits for a slow serial line (check that the output
+// has lineLength() bytes free first).
+#pragma once
+
+#include <stdint.h>
+
+#include "../Debug/Profile.hpp"
+#include "../World/Handle.hpp"
+
+namespace tinyparticle {
+
+template <class W, uint8_t kColumns = 40, uint8_t kRows = 20>
+class AsciiRenderer {
+  static_assert(kColumns >= 1 && kColumns <= 200 && kRows >= 1,
+                "1..200 columns, at least 1 row");
+
+ public:
+  typedef typename W::Scalar S;
+  typedef typename W::Vec V;
+
+  AsciiRenderer(S left, S bottom, S cellWidth, S cellHeight)
+      : mLeft(left),
+        mBottom(bottom),
+        mScaleX(S(kSub) / cellWidth),
+        mScaleY(S(kSub) / cellHeight),
+        mLine(0),
+        mBorder(true),
+        mHome(false) {}
+
+  // A frame around the view (default on).
+  void setBorder(bool on) { mBorder = on; }
+  // Start each frame with the ANSI "cursor home" code, so a terminal
+  // redraws in place instead of scrolling (default off).
+  void setHome(bool on) { mHome = on; }
+
+  // Characters per line, newline included.
+  static uint8_t lineLength() { return uint8_t(kColumns + 3); }
+
+  // Draws a whole frame.
+  template <class Out>
+  void draw(const W& world, Out& out) {
+    mLine = 0;
+    while (!drawLine(world, out)) {
+    }
+  }
+
+  // Draws the next line of the current frame; true after its last line (the
+  // next call starts a new frame).
+  template <class Out>
+  bool drawLine(const W& world, Out& out) {
+    TINYPARTICLE_PROFILE_BEGIN(kProfileRender);
+    const uint8_t first = mBorder ? 1 : 0;
+    const uint8_t total = uint8_t(kRows + 2 * first);
+    if (mLine == 0 && mHome) {
+      out.write(uint8_t(27));
+      out.write(uint8_t('['));
+      out.write(uint8_t('H'));
+    }
+    if (mBorder && (mLine == 0 || mLine == total - 1)) {
+      out.write(uint8_t('+'));
+      for (uint8_t c = 0; c < kColumns; ++c) out.write(uint8_t('-'));
+      out.write(uint8_t('+'));
+    } else {
+      char text[kColumns];
+      renderRow(world, uint8_t(mLine - first), text);
+      if (mBorder) out.write(uint8_t('|'));
+      for (uint8_t c = 0; c < kColumns; ++c) out.write(uint8_t(text[c]));
+      if (mBorder) out.write(uint8_t('|'));
+    }
+    out.write(uint8_t('\n'));
+    ++mLine;
+    const bool done = mLine >= total;
+    if (done) mLine = 0;
+    TINYPARTICLE_PROFILE_END(kProfileRender);
+    return done;
+  }
+
+  // Fills `text` with row `row` of the view (0 is the top).
+  void renderRow(const W& world, uint8_t row, char* text) const {
+    for (uint8_t c = 0; c < kColumns; ++c) text[c] = ' ';
+    // The row's band in sub-cell units, y growing upwards.
+    const int32_t low = int32_t(kRows - 1 - row) * kSub;
+    const int32_t high = low + kSub;
+
+    for (uint8_t i = 0; i < W::kForceCapacity; ++i) {
+      const typename W::ForceSlot& f = world.forceAt(i);
+      if (f.inUse() && f.a < kAnchorIndex && f.b != kNoIndex) {
+        drawLink(world, f.a, f.b, f.params.spring.anchor, low, high, text);
+      }
+    }
+    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+      const typename W::ConstraintSlot& k = world.constraintAt(i);
+      if (k.inUse() && k.a < kAnchorIndex && k.b != kNoIndex) {
+        drawLink(world, k.a, k.b, k.params.link.anchor, low, high, text);
+      }
+    }
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+      const typename W::ParticleType& p = world.particleAt(i);
+      if (p.inUse()) drawParticle(p, low, text);
+    }
+  }
+
+ private:
+  static const int32_t kSub = 16;       // sub-cell units per cell
+  static const int32_t kLimit = 16000;  // clamp, keeps products in int32
+
+  static int32_t clampUnits(int32_t v) {
+    return v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v);
+  }
+  int32_t toUnitsX(S x) const {
+    return clampUnits(((x - mLeft) * mScaleX).toInt());
+  }
+  int32_t toUnitsY(S y) const {
+    return clampUnits(((y - mBottom) * mScaleY).toInt());
+  }
+
+  static void mark(char* text, int32_t fromCell, int32_t toCell, char c) {
+    if (fromCell < 0) fromCell = 0;
+    if (toCell > int32_t(kColumns) - 1) toCell = int32_t(kColumns) - 1;
+    for (int32_t k = fromCell; k <= toCell; ++k) {
+      // A particle hides a link; a link never hides a particle.
+      if (c == '.' && text[k] != ' ') continue;
+      text[k] = c;
+    }
+  }
+
+  // floor(v / kSub) for negative v too, without shifting a negative value.
+  static int32_t cellOf(int32_t v) {
+    return v >= 0 ? v / kSub : -((-v + kSub - 1) / kSub);
+  }
+
+  // round(sqrt(n)) is not needed: floor is enough for a character grid.
+  static int32_t floorSqrt(int32_t n) {
+    if (n <= 0) return 0;
+    uint32_t x = uint32_t(n);
+    uint32_t root = 0;
+    uint32_t probe = 1UL << 30;
+    while (probe > x) probe >>= 2;
+    while (probe != 0) {
+      if (x >= root + probe) {
+        x -= root + probe;
+        root = (root >> 1) + probe;
+      } else {
+        root >>= 1;
+      }
+      probe >>= 2;
+    }
+    return int32_t(root);
+  }
+
+  void drawParticle(const typename W::ParticleType& p, int32_t low,
+                    char* text) const {
+    const int32_t x = toUnitsX(p.position.x);
+    const int32_t y = toUnitsY(p.position.y);
+    const int32_t rx = clampUnits((p.radius * mScaleX).toInt());
+    const int32_t ry = clampUnits((p.radius * mScaleY).toInt());
+    const char c = p.isStatic() ? '+' : (rx < kSub / 2 ? 'o' : 'O');
+    const int32_t centre = low + kSub / 2;  // of the row's cells
+    const int32_t dy = centre - y;
+    bool drawn = false;
+    if (ry > 0 && dy <= ry && dy >= -ry) {
+      // Half-width of the ellipse at this height, in sub-cell units.
+      const int32_t hx = rx * floorSqrt(ry * ry - dy * dy) / ry;
+      // Cells whose centre c * kSub + kSub / 2 lies in [x - hx, x + hx].
+      const int32_t from = -cellOf(-(x - hx - kSub / 2));  // ceiling
+      const int32_t to = cellOf(x + hx - kSub / 2);
+      if (from <= to) {
+        mark(text, from, to, c);
+        drawn = true;
+      }
+    }
+    if (!drawn && y >= low && y < low + kSub) {
+      const int32_t cell = cellOf(x);
+      mark(text, cell, cell, c);
+    }
+  }
+
+  void drawLink(const W& world, uint8_t a, uint8_t b, const V& anchor,
+                int32_t low, int32_t high, char* text) const {
+    const V& pa = world.particleAt(a).position;
+    const V& pb = b == kAnchorIndex ? anchor : world.particleAt(b).position;
+    int32_t x0 = toUnitsX(pa.x), y0 = toUnitsY(pa.y);
+    int32_t x1 = toUnitsX(pb.x), y1 = toUnitsY(pb.y);
+    if (y0 > y1) {  // y0 <= y1 from here on
+      int32_t t = x0; x0 = x1; x1 = t;
+      t = y0; y0 = y1; y1 = t;
+    }
+    if (y1 < low || y0 >= high) return;
+    int32_t xa = x0, xb = x1;
+    if (y1 != y0) {
+      // x where the segment enters and leaves the band.
+      const int32_t ya = y0 > low ? y0 : low;
+      const int32_t yb = y1 < high - 1 ? y1 : high - 1;
+      xa = x0 + (ya - y0) * (x1 - x0) / (y1 - y0);
+      xb = x0 + (yb - y0) * (x1 - x0) / (y1 - y0);
+    }
+    if (xa > xb) {
+      const int32_t t = xa; xa = xb; xb = t;
+    }
+    mark(text, cellOf(xa), cellOf(xb), '.');
+  }
+
+  S mLeft, mBottom;
+  S mScaleX, mScaleY;  // sub-cell units per metre
+  uint8_t mLine;
+  bool mBorder;
+  bool mHome;
+};
+
+}  // namespace tinyparticle

@@ -1,0 +1,59 @@
+// The box of balls: N balls of radius 0.03 m and mass 0.1 kg in a 1 m box
+// (its walls are planes), under gravity, colliding with each other and the
+// walls with restitution 0.8. They start on a grid with velocities of up to
+// 1 m/s from a fixed-seed generator, so every run is the same.
+//
+//   BallsWorld<Q16_16, 2, 16> world;  // N particles, 1 force, walls +
+//   buildBouncingBalls(world, 16);    // collisions, 32 contacts
+#pragma once
+
+#include <stdint.h>
+
+#include "../World/Handle.hpp"
+#include "../World/World.hpp"
+#include "Random.hpp"
+
+namespace tinyparticle {
+
+template <typename S, uint8_t Dim, uint8_t kBalls, uint8_t kContacts = 32>
+using BallsWorld = World<S, Dim, kBalls, 1, 2 * Dim + 1, kContacts>;
+
+// Adds the walls, gravity, collisions and `count` balls; returns the number
+// of balls added.
+template <class W>
+uint8_t buildBouncingBalls(W& world, uint8_t count, uint16_t seed = 2024) {
+  typedef typename W::Scalar S;
+  typedef typename W::Vec V;
+  const S restitution(0.8);
+  V low, high;
+  for (uint8_t k = 0; k < W::kDimensions; ++k) high[k] = S(1);
+  world.addBox(low, high, restitution);
+  world.addGravity();
+  world.addCollisions(restitution);
+
+  // The smallest grid with at least `count` places per layer.
+  uint8_t side = 1;
+  while (side * side < count) ++side;
+  const S spacing = S(1) / S(int(side + 1));
+  SceneRandom random(seed);
+  // Each velocity component is a multiple of 1/128 of 0.7 m/s (0.57 in 3D),
+  // so the speed stays below 1 m/s.
+  const S unit(W::kDimensions == 2 ? 0.7 / 128 : 0.57 / 128);
+  uint8_t added = 0;
+  for (uint8_t i = 0; i < count; ++i) {
+    V position;
+    position.x = spacing * S(int(i % side + 1));
+    position.y = spacing * S(int(i / side + 1));
+    if (W::kDimensions == 3) position[2] = S(0.5);
+    ParticleId id = world.addParticle(position, S(0.1), S(0.03));
+    typename W::ParticleType* p = world.particle(id);
+    if (p == nullptr) break;
+    for (uint8_t k = 0; k < W::kDimensions; ++k) {
+      p->velocity[k] = unit * S(int(random.symmetric(128)));
+    }
+    ++added;
+  }
+  return added;
+}
+
+}  // namespace tinyparticle

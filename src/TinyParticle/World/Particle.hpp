@@ -1,0 +1,79 @@
+// Particle: a point mass with a radius, the only body the engine simulates.
+//
+// A public plain struct: sketches read and write its fields directly through
+// the pointer that World::particle() returns. 2D Q16.16 takes 36 bytes:
+// position, velocity and the acceleration accumulator (8 each), inverse mass
+// and radius (4 each), damping (2), flags and generation (1 each).
+#pragma once
+
+#include <stdint.h>
+
+#include "../Math/Vec.hpp"
+
+namespace tinyparticle {
+
+template <typename S, uint8_t Dim>
+struct Particle {
+  typedef Vec<S, Dim> VecType;
+
+  enum : uint8_t {
+    kInUse = 1,     // the slot holds a live particle
+    kCollides = 2,  // takes part in planes and particle collisions
+    // Set by the world at the start of each step when inverseMass is 0, so
+    // that the step's many immovability tests are a bit test, not a scalar
+    // compare (a float compare costs about 45 cycles on AVR).
+    kStatic = 4,
+  };
+
+  VecType position;
+  VecType velocity;
+  // Acceleration accumulated by force generators (force * inverseMass)
+  // during a step; cleared at the end of the step, so a force applied
+  // between steps acts in the next one.
+  VecType acceleration;
+  // 1 / mass; 0 makes the particle immovable (nothing ever moves it).
+  S inverseMass;
+  // For collisions and planes; also the size the renderer draws.
+  S radius;
+  // Linear damping rate in units of 1/256 per second: each step the velocity
+  // loses the fraction damping / 256 * dt (one multiply; skipped when 0).
+  // Use setDampingRate() to set it in 1/s.
+  uint16_t damping;
+  uint8_t flags;
+  // Bumped when the slot is freed, so that old handles are recognised.
+  uint8_t generation;
+
+  constexpr Particle()
+      : position(), velocity(), acceleration(), inverseMass(), radius(),
+        damping(0), flags(0), generation(0) {}
+
+  bool inUse() const { return (flags & kInUse) != 0; }
+  bool collides() const { return (flags & kCollides) != 0; }
+  bool isImmovable() const { return inverseMass == S(); }
+  // isImmovable() as of the start of the current step (see kStatic).
+  bool isStatic() const { return (flags & kStatic) != 0; }
+
+  // Mass in kg; an immovable particle reports (S::max)().
+  S mass() const { return isImmovable() ? (S::max)() : S(1) / inverseMass; }
+
+  void setCollides(bool on) {
+    flags = on ? uint8_t(flags | kCollides) : uint8_t(flags & ~kCollides);
+  }
+
+  // Sets the damping rate in 1/s (0 to 255.99). Velocity then decays like
+  // exp(-rate * t) for small rate * dt.
+  void setDampingRate(S rate) {
+    S scaled = rate * S(256);
+    damping = scaled <= S() ? uint16_t(0)
+            : scaled >= S(65535) ? uint16_t(65535)
+            : uint16_t(scaled.toInt());
+  }
+  S dampingRate() const { return S(long(damping)) * S(1.0 / 256); }
+
+  // Adds a force for the current step (as acceleration: force * 1/mass).
+  void addForce(const VecType& force) {
+    acceleration.addScaled(force, inverseMass);
+  }
+};
+
+}  // namespace tinyparticle

@@ -1,0 +1,754 @@
+// World: the particle world, with every pool allocated statically.
+//
+//   World<S, Dim, kParticles, kForces, kConstraints, kContacts>
+//
+// S is the scalar (Q16_16, Q24_8, Float...), Dim is 2 or 3, and the four
+// capacities size the pools. Nothing is allocated at run time. What a scene
+// does not use costs nothing: a pool of capacity 0 takes no RAM and its step
+// code disappears at compile time; a generator type that is never added is
+// never instantiated, so its code is not linked.
+//
+// A step (step(dt)):
+//  1. force generators add acceleration to their particles' accumulators;
+//  2. semi-implicit Euler: v += a dt, damping (one multiply, skipped when 0),
+//     x += v dt, for every particle that is in use and movable;
+//  3. contact generators (rods, cables, planes, collisions) fill the contact
+//     pool;
+//  4. the resolver (Contacts/Resolver.hpp) resolves them;
+//  5. the accumulators are cleared, so forces applied between steps act in
+//     the next step.
+//
+// Conventions: SI units; y points up and gravity is (0, -9.81[, 0]) m/s^2.
+#pragma once
+
+#include <stdint.h>
+
+#include "../Configuration.hpp"
+#include "../Contacts/Collisions.hpp"
+#include "../Contacts/Contact.hpp"
+#include "../Contacts/Link.hpp"
+#include "../Contacts/Plane.hpp"
+#include "../Contacts/Resolver.hpp"
+#include "../Debug/Debug.hpp"
+#include "../Debug/Profile.hpp"
+#include "../Math/Vec.hpp"
+#include "Handle.hpp"
+#include "Margins.hpp"
+#include "Particle.hpp"
+#include "Slots.hpp"
+
+namespace tinyparticle {
+
+template <typename S, uint8_t Dim, uint8_t kParticles, uint8_t kForces = 0,
+          uint8_t kConstraints = 0, uint8_t kContacts = 0>
+class World
+    : private detail::Pool<Particle<S, Dim>, kParticles>,
+      private detail::Pool<
+          ForceSlot<S, Dim,
+                    World<S, Dim, kParticles, kForces, kConstraints, kContacts> >,
+          kForces>,
+      private detail::Pool<
+          ConstraintSlot<
+              S, Dim,
+              World<S, Dim, kParticles, kForces, kConstraints, kContacts> >,
+          kConstraints>,
+      private detail::Pool<Contact<S, Dim>, kContacts> {
+  static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
+  static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
+                    kConstraints < kAnchorIndex && kContacts < kAnchorIndex,
+                "a pool holds at most 252 objects");
+
+ public:
+  typedef S Scalar;
+  typedef tinyparticle::Vec<S, Dim> Vec;
+  typedef Particle<S, Dim> ParticleType;
+  typedef Contact<S, Dim> ContactType;
+  typedef tinyparticle::ForceSlot<S, Dim, World> ForceSlot;
+  typedef tinyparticle::ConstraintSlot<S, Dim, World> ConstraintSlot;
+
+  static const uint8_t kDimensions = Dim;
+  static const uint8_t kParticleCapacity = kParticles;
+  static const uint8_t kForceCapacity = kForces;
+  static const uint8_t kConstraintCapacity = kConstraints;
+  static const uint8_t kContactCapacity = kContacts;
+
+ private:
+  typedef detail::Pool<ParticleType, kParticles> ParticlePool;
+  typedef detail::Pool<ForceSlot, kForces> ForcePool;
+  typedef detail::Pool<ConstraintSlot, kConstraints> ConstraintPool;
+  typedef detail::Pool<ContactType, kContacts> ContactPool;
+
+ public:
+  constexpr World()
+      : mContactCount(0), mError(0), mIterationCap(0), mStats() {}
+
+  // The standard gravity of every scene: 9.81 m/s^2 along -y.
+  static Vec standardGravity() {
+    Vec g;
+    g.y = S(-9.81);
+    return g;
+  }
+
+  // ---- Particles --------------------------------------------------------
+
+  // A particle of the given mass (kg, > 0) and radius (m). It collides
+  // (with planes and, if enabled, with other particles); see setCollides().
+  // Returns an invalid id and sets WorldError::kParticlesFull when the pool
+  // is full (kBadArgument for a mass <= 0).
+  ParticleId addParticle(const Vec& position, S mass, S radius = S()) {
+    if (mass <= S()) {
+      mError |= WorldError::kBadArgument;
+      return ParticleId();
+    }
+    return addWithInverseMass(position, S(1) / mass, radius);
+  }
+
+  // An immovable particle (inverse mass 0): pivots and anchors.
+  ParticleId addFixedParticle(const Vec& position, S radius = S()) {
+    return addWithInverseMass(position, S(), radius);
+  }
+
+  ParticleId addWithInverseMass(const Vec& position, S inverseMass, S radius) {
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      ParticleType& p = particleAt(i);
+      if (p.inUse()) continue;
+      const uint8_t generation = p.generation;
+      p = ParticleType();
+      p.generation = generation;
+      p.position = position;
+      p.inverseMass = inverseMass;
+      p.radius = radius;
+      p.flags = ParticleType::kInUse | ParticleType::kCollides;
+      if (inverseMass == S()) p.flags |= ParticleType::kStatic;
+      return ParticleId(i, generation);
+    }
+    mError |= WorldError::kParticlesFull;
+    TINYPARTICLE_DEBUG_PRINT("particle pool full");
+    return ParticleId();
+  }
+
+  // The particle, or null if the id is invalid or stale.
+  ParticleType* particle(ParticleId id) {
+    return isLive(id) ? &particleAt(id.index) : nullptr;
+  }
+  const ParticleType* particle(ParticleId id) const {
+    return isLive(id) ? &particleAt(id.index) : nullptr;
+  }
+
+  // Removes the particle and every force generator and constraint that
+  // refers to it by index (generators for all particles stay). Returns
+  // false (and sets kStaleHandle) for an invalid or stale id.
+  bool removeParticle(ParticleId id) {
+    if (!check(id)) return false;
+    for (uint8_t i = 0; i < kForces; ++i) {
+      ForceSlot& f = forceAt(i);
+      if (f.inUse() && (f.a == id.index || f.b == id.index)) freeForce(f);
+    }
+    for (uint8_t i = 0; i < kConstraints; ++i) {
+      ConstraintSlot& c = constraintAt(i);
+      if (c.inUse() && (c.a == id.index || c.b == id.index)) {
+        freeConstraint(c);
+      }
+    }
+    ParticleType& p = particleAt(id.index);
+    const uint8_t generation = uint8_t(p.generation + 1);
+    p = ParticleType();
+    p.generation = generation;
+    return true;
+  }
+
+  // Adds a force (N) for the next step: acceleration += force / mass.
+  bool applyForce(ParticleId id, const Vec& force) {
+    ParticleType* p = particle(id);
+    if (p == nullptr) {
+      mError |= WorldError::kStaleHandle;
+      return false;
+    }
+    p->addForce(force);
+    return true;
+  }
+
+  uint8_t particleCount() const {
+    uint8_t n = 0;
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      if (particleAt(i).inUse()) ++n;
+    }
+    return n;
+  }
+
+  // The handle of the particle in slot `index` (invalid if the slot is free).
+  ParticleId idOf(uint8_t index) const {
+    if (index >= kParticles || !particleAt(index).inUse()) return ParticleId();
+    return ParticleId(index, particleAt(index).generation);
+  }
+
+  // ---- Force generators -------------------------------------------------
+  // Each returns an invalid id and sets an error bit when the pool is full
+  // (kForcesFull) or a particle id is stale (kStaleHandle).
+
+  // Gravity for every particle: standard gravity, or any acceleration.
+  ForceId addGravity() { return addGravity(standardGravity()); }
+  ForceId addGravity(const Vec& acceleration) {
+    ForceId id;
+    ForceSlot* f = newForce(id, kAllIndex, kNoIndex);
+    if (f == nullptr) return id;
+    GravityParams<S, Dim> params;
+    params.acceleration = acceleration;
+    f->params.gravity = params;
+    f->apply = &GravityForce<World>::apply;
+    return id;
+  }
+  // Gravity for one particle, standard gravity times `multiplier`.
+  ForceId addGravity(ParticleId target, S multiplier = S(1)) {
+    ForceId id;
+    if (!check(target)) return id;
+    ForceSlot* f = newForce(id, target.index, kNoIndex);
+    if (f == nullptr) return id;
+    GravityParams<S, Dim> params;
+    params.acceleration = standardGravity() * multiplier;
+    f->params.gravity = params;
+    f->apply = &GravityForce<World>::apply;
+    return id;
+  }
+
+  // Drag k1 |v| + k2 |v|^2 against the velocity, on every particle or one.
+  ForceId addDrag(S k1, S k2) { return addDragFor(kAllIndex, k1, k2); }
+  ForceId addDrag(ParticleId target, S k1, S k2) {
+    if (!check(target)) return ForceId();
+    return addDragFor(target.index, k1, k2);
+  }
+
+  // A spring of stiffness k (N/m) and rest length (m) between two particles.
+  ForceId addSpring(ParticleId a, ParticleId b, S k, S restLength) {
+    return addSpringKind(a, b, k, restLength,
+                         &SpringForce<World, false, false>::apply);
+  }
+  // A spring from a particle to a fixed point.
+  ForceId addSpring(ParticleId a, const Vec& anchor, S k, S restLength) {
+    return addAnchoredSpringKind(a, anchor, k, restLength,
+                                 &SpringForce<World, true, false>::apply);
+  }
+  // A bungee: a spring that only pulls, and only beyond its rest length.
+  ForceId addBungee(ParticleId a, ParticleId b, S k, S restLength) {
+    return addSpringKind(a, b, k, restLength,
+                         &SpringForce<World, false, true>::apply);
+  }
+  ForceId addBungee(ParticleId a, const Vec& anchor, S k, S restLength) {
+    return addAnchoredSpringKind(a, anchor, k, restLength,
+                                 &SpringForce<World, true, true>::apply);
+  }
+
+  // Buoyancy under a water surface at height `surface` (m, along y), for
+  // bodies of half-height maxDepth (m, > 0) and the given volume (m^3), in a
+  // liquid of the given density (kg/m^3; water 1000). For every particle or
+  // one. The full force density * volume * 9.81 is computed once, in float.
+  ForceId addBuoyancy(S surface, S maxDepth, S volume, S density) {
+    return addBuoyancyFor(kAllIndex, surface, maxDepth, volume, density);
+  }
+  ForceId addBuoyancy(ParticleId target, S surface, S maxDepth, S volume,
+                      S density) {
+    if (!check(target)) return ForceId();
+    return addBuoyancyFor(target.index, surface, maxDepth, volume, density);
+  }
+
+  // A stiff spring (Forces/StiffSpring.hpp) from a particle to an anchor:
+  // stiffness k (N/m) and damping (N s/m) with the particle's present mass,
+  // exact for steps of `dt`. Its two gains are computed once, in float.
+  ForceId addStiffSpring(ParticleId target, const Vec& anchor, S k, S damping,
+                         S dt) {
+    ForceId id;
+    if (!check(target)) return id;
+    if (dt <= S()) {
+      mError |= WorldError::kBadArgument;
+      return id;
+    }
+    ForceSlot* f = newForce(id, target.index, kAnchorIndex);
+    if (f == nullptr) return id;
+    const double inverseMass = particleAt(target.index).inverseMass.toFloat();
+    double gainA, gainB;
+    detail::stiffSpringGains(k.toFloat() * inverseMass,
+                             damping.toFloat() * inverseMass, dt.toFloat(),
+                             &gainA, &gainB);
+    StiffSpringParams<S, Dim> params;
+    params.anchor = anchor;
+    params.positionGain = S(gainA);
+    params.velocityGain = S(gainB);
+    f->params.stiffSpring = params;
+    f->apply = &StiffSpringForce<World>::apply;
+    return id;
+  }
+
+  // A force (N) read each step from a vector the sketch owns.
+  ForceId addCustomForce(ParticleId target, const Vec* force) {
+    ForceId id;
+    if (!check(target)) return id;
+    if (force == nullptr) {
+      mError |= WorldError::kBadArgument;
+      return id;
+    }
+    ForceSlot* f = newForce(id, target.index, kNoIndex);
+    if (f == nullptr) return id;
+    CustomForceParams<S, Dim> params;
+    params.force = force;
+    f->params.custom = params;
+    f->apply = &CustomForce<World>::apply;
+    return id;
+  }
+
+  // The slot, to read or change its parameters; null if stale.
+  ForceSlot* force(ForceId id) {
+    if (id.index >= kForces) return nullptr;
+    ForceSlot& f = forceAt(id.index);
+    return f.inUse() && f.generation == id.generation ? &f : nullptr;
+  }
+
+  bool removeForce(ForceId id) {
+    ForceSlot* f = force(id);
+    if (f == nullptr) {
+      mError |= WorldError::kStaleHandle;
+      return false;
+    }
+    freeForce(*f);
+    return true;
+  }
+
+  // ---- Constraints (contact generators) ----------------------------------
+  // Each returns an invalid id and sets an error bit when the pool is full
+  // (kConstraintsFull) or a particle id is stale (kStaleHandle).
+
+  // A rod: the two particles stay `length` (m) apart.
+  ConstraintId addRod(ParticleId a, ParticleId b, S length) {
+    return addLink(a, b, length, S(),
+                   &LinkConstraint<World, false, true>::generate);
+  }
+  ConstraintId addRod(ParticleId a, const Vec& anchor, S length) {
+    return addAnchoredLink(a, anchor, length, S(),
+                           &LinkConstraint<World, true, true>::generate);
+  }
+  // A cable: at most `length` (m) apart; it bounces with `restitution`.
+  ConstraintId addCable(ParticleId a, ParticleId b, S length, S restitution) {
+    return addLink(a, b, length, restitution,
+                   &LinkConstraint<World, false, false>::generate);
+  }
+  ConstraintId addCable(ParticleId a, const Vec& anchor, S length,
+                        S restitution) {
+    return addAnchoredLink(a, anchor, length, restitution,
+                           &LinkConstraint<World, true, false>::generate);
+  }
+
+  // Changes a rod's or a cable's length. False if the id is not one.
+  bool setLength(ConstraintId id, S length) {
+    ConstraintSlot* c = constraint(id);
+    if (c == nullptr || c->a >= kAnchorIndex || c->b == kNoIndex) {
+      mError |= WorldError::kStaleHandle;
+      return false;
+    }
+    c->params.link.length = length;
+    return true;
+  }
+
+  // A half-space: every colliding particle keeps
+  // dot(normal, position) - radius >= offset. The normal need not be unit
+  // length (it is normalised here); along an axis it takes a fast path.
+  ConstraintId addPlane(const Vec& normal, S offset, S restitution) {
+    Vec unit = normal;
+    if (!unit.normalize()) {
+      mError |= WorldError::kBadArgument;
+      return ConstraintId();
+    }
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (unit[k] == S(1)) return addAxisPlane(k, true, offset, restitution);
+      if (unit[k] == S(-1)) {
+        return addAxisPlane(k, false, -offset, restitution);
+      }
+    }
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
+    if (c == nullptr) return id;
+    PlaneParams<S, Dim> params;
+    params.normal = unit;
+    params.offset = offset;
+    c->params.plane = params;
+    c->generate = &PlaneConstraint<World>::generate;
+    return id;
+  }
+
+  // The walls of the box low <= x <= high (2 Dim axis-aligned planes, facing
+  // inwards). False if the pool could not take them all.
+  bool addBox(const Vec& low, const Vec& high, S restitution) {
+    bool ok = true;
+    for (uint8_t k = 0; k < Dim; ++k) {
+      ok = addAxisPlane(k, true, low[k], restitution).isValid() && ok;
+      ok = addAxisPlane(k, false, high[k], restitution).isValid() && ok;
+    }
+    return ok;
+  }
+
+  // Collisions between all pairs of colliding particles.
+  ConstraintId addCollisions(S restitution) {
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
+    if (c == nullptr) return id;
+    c->generate = &CollisionConstraint<World>::generate;
+    return id;
+  }
+
+  ConstraintSlot* constraint(ConstraintId id) {
+    if (id.index >= kConstraints) return nullptr;
+    ConstraintSlot& c = constraintAt(id.index);
+    return c.inUse() && c.generation == id.generation ? &c : nullptr;
+  }
+
+  bool removeConstraint(ConstraintId id) {
+    ConstraintSlot* c = constraint(id);
+    if (c == nullptr) {
+      mError |= WorldError::kStaleHandle;
+      return false;
+    }
+    freeConstraint(*c);
+    return true;
+  }
+
+  // ---- Stepping -----------------------------------------------------------
+
+  // Advances the world by dt seconds (see the top of this file).
+  void step(S dt) {
+    TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      ParticleType& p = particleAt(i);
+      p.flags = p.inverseMass == S() ? uint8_t(p.flags | ParticleType::kStatic)
+                                     : uint8_t(p.flags & ~ParticleType::kStatic);
+    }
+    TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
+    for (uint8_t i = 0; i < kForces; ++i) {
+      ForceSlot& f = forceAt(i);
+      if (f.apply != nullptr) f.apply(*this, f, dt);
+    }
+    TINYPARTICLE_PROFILE_END(kProfileForces);
+    integrate(dt);
+    if (kConstraints != 0) {
+      TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
+      mContactCount = 0;
+      mStats.dropped = 0;
+      for (uint8_t i = 0; i < kConstraints; ++i) {
+        ConstraintSlot& c = constraintAt(i);
+        if (c.generate != nullptr) c.generate(*this, c, i);
+      }
+      mStats.contacts = mContactCount;
+      TINYPARTICLE_PROFILE_END(kProfileContacts);
+      TINYPARTICLE_PROFILE_BEGIN(kProfileResolve);
+      uint16_t cap = mIterationCap;
+      if (cap == 0) cap = uint16_t(2u * mContactCount);
+      if (cap > 255) cap = 255;
+      mStats.iterations = Resolver<World>::resolve(*this, dt, uint8_t(cap));
+      TINYPARTICLE_PROFILE_END(kProfileResolve);
+    }
+    for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
+    TINYPARTICLE_PROFILE_END(kProfileStep);
+  }
+
+  // `substeps` steps of dt each (so time advances by substeps * dt).
+  void step(S dt, uint8_t substeps) {
+    for (uint8_t i = 0; i < substeps; ++i) step(dt);
+  }
+
+  // The resolver's iteration cap per step; 0 (the default) means twice the
+  // number of contacts of that step.
+  void setIterationCap(uint8_t cap) { mIterationCap = cap; }
+
+  const StepStats& stats() const { return mStats; }
+  uint8_t contactCount() const { return mContactCount; }
+
+  // WorldError bits, sticky until clearError().
+  uint8_t error() const { return mError; }
+  void clearError() { mError = 0; }
+
+  // ---- For generators, the renderer and tests ----------------------------
+  // Slot access by index, without checks: index < capacity.
+
+  ParticleType& particleAt(uint8_t i) { return ParticlePool::at(i); }
+  const ParticleType& particleAt(uint8_t i) const {
+    return ParticlePool::at(i);
+  }
+  ForceSlot& forceAt(uint8_t i) { return ForcePool::at(i); }
+  const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
+  ConstraintSlot& constraintAt(uint8_t i) { return ConstraintPool::at(i); }
+  const ConstraintSlot& constraintAt(uint8_t i) const {
+    return ConstraintPool::at(i);
+  }
+  ContactType& contactAt(uint8_t i) { return ContactPool::at(i); }
+  const ContactType& contactAt(uint8_t i) const { return ContactPool::at(i); }
+
+  // Contacts are made a little before surfaces touch: planes and collisions
+  // report a contact while the gap is at most this (31 um, or four units of
+  // a coarse scalar), so that rounding cannot leave a resting particle a
+  // hair above its support, free to fall and hop for a step. The resolver
+  // treats depths and speeds below the same margins as resolved.
+  static S contactMargin() { return detail::Margins<S>::depth(); }
+  static S speedMargin() { return detail::Margins<S>::speed(); }
+
+  S restitutionOf(uint8_t constraintIndex) const {
+    return constraintAt(constraintIndex).restitution;
+  }
+
+  // True if that constraint is the particle collisions (contacts between two
+  // particles from a generator that acts on all of them).
+  bool isCollision(uint8_t constraintIndex) const {
+    return constraintAt(constraintIndex).a == kAllIndex;
+  }
+
+  // Records a contact for this step, unless it is neither penetrating nor
+  // closing. When the pool is full the least severe contact (largest
+  // separating velocity) gives way to a more severe one; either way one
+  // contact is dropped, counted in stats().dropped, and
+  // WorldError::kContactsDropped is set.
+  void addContact(uint8_t a, uint8_t b, const Vec& normal, S penetration,
+                  uint8_t source) {
+    const S separating = Resolver<World>::separatingVelocity(*this, a, b, normal);
+    // Touching (or within the margin), not closing, and no acceleration
+    // along the normal: only a push from another contact could make it
+    // close this step, and the next step would catch that. Such contacts
+    // are common (balls side by side on the floor) and skipping them spares
+    // the pool and the resolver's passes. (A ball resting on another one is
+    // kept: the floor stops the lower one, and then they close.)
+    if (penetration <= S() && separating >= S() &&
+        dot(particleAt(a).acceleration, normal) == S() &&
+        (b == kNoIndex || dot(particleAt(b).acceleration, normal) == S())) {
+      return;
+    }
+    uint8_t slot = mContactCount;
+    if (slot >= kContacts) {
+      mError |= WorldError::kContactsDropped;
+      if (mStats.dropped == 0) TINYPARTICLE_DEBUG_PRINT("contact pool full");
+      if (mStats.dropped != 255) ++mStats.dropped;
+      if (kContacts == 0) return;
+      slot = 0;
+      for (uint8_t i = 1; i < kContacts; ++i) {
+        if (contactAt(i).separatingVelocity >
+            contactAt(slot).separatingVelocity) {
+          slot = i;
+        }
+      }
+      if (!(separating < contactAt(slot).separatingVelocity)) return;
+    } else {
+      ++mContactCount;
+    }
+    ContactType& c = contactAt(slot);
+    c.normal = normal;
+    c.penetration = penetration;
+    c.separatingVelocity = separating;
+    c.a = a;
+    c.b = b;
+    c.source = source;
+  }
+
+ private:
+  bool isLive(ParticleId id) const {
+    if (id.index >= kParticles) return false;
+    const ParticleType& p = particleAt(id.index);
+    return p.inUse() && p.generation == id.generation;
+  }
+
+  // isLive, and records a stale or invalid handle.
+  bool check(ParticleId id) {
+    if (isLive(id)) return true;
+    mError |= WorldError::kStaleHandle;
+    TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
+    return false;
+  }
+
+  void integrate(S dt) {
+    TINYPARTICLE_PROFILE_BEGIN(kProfileIntegrate);
+    S dampingUnit = S();
+    bool haveDampingUnit = false;
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      ParticleType& p = particleAt(i);
+      if ((p.flags & (ParticleType::kInUse | ParticleType::kStatic)) !=
+          ParticleType::kInUse) {
+        continue;
+      }
+      // Component by component, skipping zeros: gravity alone leaves x's
+      // acceleration at 0, and resting particles have no velocity, and a
+      // compare costs far less than a multiply and an add.
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (p.acceleration[k] != S()) p.velocity[k] += p.acceleration[k] * dt;
+      }
+      if (p.damping != 0) {
+        if (!haveDampingUnit) {
+          dampingUnit = dt * S(1.0 / 256);
+          haveDampingUnit = true;
+        }
+        S loss = S(long(p.damping)) * dampingUnit;
+        if (loss >= S(1)) {
+          p.velocity = Vec();
+        } else {
+          p.velocity.addScaled(p.velocity, -loss);
+        }
+      }
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (p.velocity[k] != S()) p.position[k] += p.velocity[k] * dt;
+      }
+    }
+    TINYPARTICLE_PROFILE_END(kProfileIntegrate);
+  }
+
+  ForceSlot* newForce(ForceId& id, uint8_t a, uint8_t b) {
+    for (uint8_t i = 0; i < kForces; ++i) {
+      ForceSlot& f = forceAt(i);
+      if (f.inUse()) continue;
+      f.a = a;
+      f.b = b;
+      id = ForceId(i, f.generation);
+      return &f;
+    }
+    mError |= WorldError::kForcesFull;
+    TINYPARTICLE_DEBUG_PRINT("force pool full");
+    return nullptr;
+  }
+
+  void freeForce(ForceSlot& f) {
+    const uint8_t generation = uint8_t(f.generation + 1);
+    f = ForceSlot();
+    f.generation = generation;
+  }
+
+  ConstraintSlot* newConstraint(ConstraintId& id, uint8_t a, uint8_t b,
+                                S restitution) {
+    for (uint8_t i = 0; i < kConstraints; ++i) {
+      ConstraintSlot& c = constraintAt(i);
+      if (c.inUse()) continue;
+      c.a = a;
+      c.b = b;
+      c.restitution = restitution;
+      id = ConstraintId(i, c.generation);
+      return &c;
+    }
+    mError |= WorldError::kConstraintsFull;
+    TINYPARTICLE_DEBUG_PRINT("constraint pool full");
+    return nullptr;
+  }
+
+  void freeConstraint(ConstraintSlot& c) {
+    const uint8_t generation = uint8_t(c.generation + 1);
+    c = ConstraintSlot();
+    c.generation = generation;
+  }
+
+  ForceId addDragFor(uint8_t target, S k1, S k2) {
+    ForceId id;
+    ForceSlot* f = newForce(id, target, kNoIndex);
+    if (f == nullptr) return id;
+    DragParams<S> params;
+    params.k1 = k1;
+    params.k2 = k2;
+    f->params.drag = params;
+    f->apply = &DragForce<World>::apply;
+    return id;
+  }
+
+  ForceId addSpringKind(ParticleId a, ParticleId b, S k, S restLength,
+                        typename ForceSlot::Apply apply) {
+    ForceId id;
+    if (!check(a) || !check(b)) return id;
+    if (a == b) {
+      mError |= WorldError::kBadArgument;
+      return id;
+    }
+    ForceSlot* f = newForce(id, a.index, b.index);
+    if (f == nullptr) return id;
+    SpringParams<S, Dim> params;
+    params.stiffness = k;
+    params.restLength = restLength;
+    f->params.spring = params;
+    f->apply = apply;
+    return id;
+  }
+
+  ForceId addAnchoredSpringKind(ParticleId a, const Vec& anchor, S k,
+                                S restLength, typename ForceSlot::Apply apply) {
+    ForceId id;
+    if (!check(a)) return id;
+    ForceSlot* f = newForce(id, a.index, kAnchorIndex);
+    if (f == nullptr) return id;
+    SpringParams<S, Dim> params;
+    params.anchor = anchor;
+    params.stiffness = k;
+    params.restLength = restLength;
+    f->params.spring = params;
+    f->apply = apply;
+    return id;
+  }
+
+  ForceId addBuoyancyFor(uint8_t target, S surface, S maxDepth, S volume,
+                         S density) {
+    ForceId id;
+    if (maxDepth <= S()) {
+      mError |= WorldError::kBadArgument;
+      return id;
+    }
+    ForceSlot* f = newForce(id, target, kNoIndex);
+    if (f == nullptr) return id;
+    BuoyancyParams<S> params;
+    params.surface = surface;
+    params.maxDepth = maxDepth;
+    params.invTwiceDepth = S(0.5 / double(maxDepth.toFloat()));
+    params.fullForce =
+        S(double(density.toFloat()) * double(volume.toFloat()) * 9.81);
+    f->params.buoyancy = params;
+    f->apply = &BuoyancyForce<World>::apply;
+    return id;
+  }
+
+  ConstraintId addLink(ParticleId a, ParticleId b, S length, S restitution,
+                       typename ConstraintSlot::Generate generate) {
+    ConstraintId id;
+    if (!check(a) || !check(b)) return id;
+    if (a == b) {
+      mError |= WorldError::kBadArgument;
+      return id;
+    }
+    ConstraintSlot* c = newConstraint(id, a.index, b.index, restitution);
+    if (c == nullptr) return id;
+    LinkParams<S, Dim> params;
+    params.length = length;
+    c->params.link = params;
+    c->generate = generate;
+    return id;
+  }
+
+  ConstraintId addAnchoredLink(ParticleId a, const Vec& anchor, S length,
+                               S restitution,
+                               typename ConstraintSlot::Generate generate) {
+    ConstraintId id;
+    if (!check(a)) return id;
+    ConstraintSlot* c = newConstraint(id, a.index, kAnchorIndex, restitution);
+    if (c == nullptr) return id;
+    LinkParams<S, Dim> params;
+    params.anchor = anchor;
+    params.length = length;
+    c->params.link = params;
+    c->generate = generate;
+    return id;
+  }
+
+  // The plane x[axis] >= offset (positive) or x[axis] <= offset (negative).
+  ConstraintId addAxisPlane(uint8_t axis, bool positive, S offset,
+                            S restitution) {
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
+    if (c == nullptr) return id;
+    PlaneParams<S, Dim> params;
+    params.normal[axis] = positive ? S(1) : S(-1);
+    params.offset = positive ? offset : -offset;
+    c->params.plane = params;
+    c->generate = &PlaneConstraint<World>::generateAxis;
+    return id;
+  }
+
+  uint8_t mContactCount;
+  uint8_t mError;
+  uint8_t mIterationCap;
+  StepStats mStats;
+};
+
+}  // namespace tinyparticle

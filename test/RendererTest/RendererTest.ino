@@ -1,0 +1,148 @@
+// The ASCII renderer: where particles and links land on the character grid,
+// circles by radius, the border, and line-by-line drawing.
+#include <AUnit.h>
+#include <TinyParticle.h>
+
+using aunit::TestRunner;
+
+// Collects what the renderer writes.
+struct Capture {
+  char text[300];
+  uint16_t length;
+  uint8_t lines;
+  Capture() : length(0), lines(0) { text[0] = '\0'; }
+  size_t write(uint8_t c) {
+    if (c == '\n') ++lines;
+    if (length + 1u < sizeof(text)) {
+      text[length++] = char(c);
+      text[length] = '\0';
+    }
+    return 1;
+  }
+};
+
+template <typename S>
+struct Checks {
+  typedef World<S, 2, 3, 0, 1> W;
+  typedef typename W::Vec V;
+  // 20 x 10 characters over 2 m x 2 m: cells of 0.1 m x 0.2 m.
+  typedef AsciiRenderer<W, 20, 10> R;
+
+  // Row `row` of a view holding one particle, as a C string.
+  static void row(const V& where, S radius, uint8_t row, char* out) {
+    W w;
+    w.addParticle(where, S(1), radius);
+    R renderer(S(0), S(0), S(0.1), S(0.2));
+    renderer.renderRow(w, row, out);
+    out[20] = '\0';
+  }
+
+  // A rod from a fixed particle near the top-left corner to one near the
+  // top-right corner: row 0.
+  static void rod(char* out) {
+    W w;
+    V left(0.05, 1.9), right(1.95, 1.9);
+    ParticleId a = w.addFixedParticle(left);
+    ParticleId b = w.addParticle(right, S(1));
+    w.addRod(a, b, S(1.9));
+    R renderer(S(0), S(0), S(0.1), S(0.2));
+    renderer.renderRow(w, 0, out);
+    out[20] = '\0';
+  }
+
+  // A whole frame with a border, line by line: returns how many calls
+  // returned false before the one that returned true.
+  static uint8_t frame(Capture& capture) {
+    W w;
+    V where(1.05, 1.1);
+    w.addParticle(where, S(1));
+    R renderer(S(0), S(0), S(0.1), S(0.2));
+    uint8_t calls = 0;
+    while (!renderer.drawLine(w, capture) && calls < 50) ++calls;
+    return calls;
+  }
+};
+
+// A point particle at (1.05, 1.1): column 10, row 4 from the top
+// (y = 1.1 is 5.5 cells up, in the 6th row from the bottom).
+test(PointParticle_Q16_16) {
+  char line[21];
+  Checks<Q16_16>::row(Checks<Q16_16>::V(1.05, 1.1), Q16_16(), 4, line);
+  assertEqual(line, "          o         ");
+  Checks<Q16_16>::row(Checks<Q16_16>::V(1.05, 1.1), Q16_16(), 3, line);
+  assertEqual(line, "                    ");
+}
+test(PointParticle_Float) {
+  char line[21];
+  Checks<Float>::row(Checks<Float>::V(1.05, 1.1), Float(), 4, line);
+  assertEqual(line, "          o         ");
+}
+
+// Radius 0.25 m at the same place: 2.5 cells wide and 1.25 cells tall each
+// side. Its centre row covers the cells whose centres lie within 2.5 cells
+// (columns 8 to 12); one row up or down, within 2.5 sqrt(1 - 0.8^2) = 1.5
+// cells (columns 9 to 11); two rows away, nothing.
+test(Circle_Q16_16) {
+  typedef Checks<Q16_16> C;
+  char line[21];
+  C::row(C::V(1.05, 1.1), Q16_16(0.25), 4, line);
+  assertEqual(line, "        OOOOO       ");
+  C::row(C::V(1.05, 1.1), Q16_16(0.25), 3, line);
+  assertEqual(line, "         OOO        ");
+  C::row(C::V(1.05, 1.1), Q16_16(0.25), 5, line);
+  assertEqual(line, "         OOO        ");
+  C::row(C::V(1.05, 1.1), Q16_16(0.25), 6, line);
+  assertEqual(line, "                    ");
+}
+test(Circle_Float) {
+  typedef Checks<Float> C;
+  char line[21];
+  C::row(C::V(1.05, 1.1), Float(0.25), 4, line);
+  assertEqual(line, "        OOOOO       ");
+  C::row(C::V(1.05, 1.1), Float(0.25), 5, line);
+  assertEqual(line, "         OOO        ");
+}
+
+// Off the view: nothing drawn, nothing written outside the line.
+test(OffScreen) {
+  typedef Checks<Q16_16> C;
+  char line[22];
+  line[21] = '#';
+  C::row(C::V(100.0, 1.1), Q16_16(0.5), 4, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(-100.0, -100.0), Q16_16(5), 4, line);
+  assertEqual(line, "                    ");
+  assertEqual(line[21], '#');
+}
+
+// The rod is dots between its ends; the fixed end shows as '+'.
+test(RodLine) {
+  char line[21];
+  Checks<Q16_16>::rod(line);
+  assertEqual(line, "+..................o");
+  Checks<Float>::rod(line);
+  assertEqual(line, "+..................o");
+}
+
+// 10 rows plus two border lines of 22 characters and a newline each; the
+// 12th call completes the frame.
+test(FrameByLines) {
+  Capture capture;
+  assertEqual((int) Checks<Q16_16>::frame(capture), 11);
+  assertEqual((int) capture.lines, 12);
+  assertEqual((int) capture.length, 12 * 23);
+  assertEqual(capture.text[0], '+');
+  assertEqual(capture.text[21], '+');
+  assertEqual(capture.text[23], '|');
+  assertEqual(capture.text[23 + 4 * 23 + 1 + 10], 'o');  // row 4, column 10
+}
+
+void setup() {
+#if !defined(EPOXY_DUINO)
+  delay(1000);
+#endif
+  Serial.begin(115200);
+  while (!Serial);
+}
+
+void loop() { TestRunner::run(); }
