@@ -13,7 +13,7 @@ JOBS ?= 2
 # The demo example: BouncingBalls once it exists, else the minimal Hello.
 DEMO ?= $(firstword $(wildcard examples/BouncingBalls) examples/Hello)
 
-.PHONY: help setup demo test test-host test-target checks sizes bench clean
+.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick clean
 
 help:
 	@sed -n '3,4p' Makefile | sed 's/^# *//'
@@ -55,6 +55,12 @@ bench:
 	@$(SCRIPTS)/setup-packages bench
 	@if [ -f extras/benchmarks/Makefile ]; then $(MAKE) --no-print-directory -C extras/benchmarks; \
 	else echo "bench: extras/benchmarks/Makefile does not exist yet"; exit 1; fi
+
+# The whole benchmark pipeline on a few operations and one scene, into a
+# temporary folder (committed figures untouched): a check step of `make test`.
+bench-quick:
+	@$(SCRIPTS)/setup-packages bench
+	@$(MAKE) --no-print-directory -C extras/benchmarks quick
 
 clean:
 	rm -rf build

@@ -1,0 +1,129 @@
+// What the Nano reports during a scene run: the cycles of every step (summed
+// over the first 2 s and over the last second) and the state of every particle
+// at t = 0, 1 s and 10 s, as the exact bits of the scalar in hex.
+#pragma once
+
+#include <Arduino.h>
+#include <TinyParticle.h>
+#include <string.h>
+
+#include "CycleCounter.h"
+
+namespace scenebench {
+
+inline void printHex(uint32_t v, uint8_t digits) {
+  Serial.write(' ');
+  while (digits-- > 0) {
+    uint8_t nibble = uint8_t(v >> (4 * digits)) & 0xF;
+    Serial.write(nibble < 10 ? '0' + nibble : 'a' + nibble - 10);
+  }
+}
+
+template <uint8_t I, uint8_t F>
+inline void printScalar(Fixed<I, F> v) {
+  printHex(uint32_t(v.raw()), (I + F) / 4);
+}
+inline void printScalar(Float v) {
+  float f = v.toFloat();
+  uint32_t bits;
+  memcpy(&bits, &f, sizeof(bits));
+  printHex(bits, 8);
+}
+
+// Stack headroom: the free RAM between the end of the static data and the
+// stack is filled with a pattern at start-up; what is still intact at the end
+// was never reached by the stack. (Nothing here uses the heap.)
+extern "C" uint8_t __heap_start;
+const uint8_t kPaint = 0xA5;
+
+inline void paintStack() {
+  uint8_t here;
+  for (uint8_t* p = &__heap_start; p < &here - 32; ++p) *p = kPaint;
+}
+
+inline uint16_t stackHeadroom() {
+  uint16_t n = 0;
+  for (const uint8_t* p = &__heap_start; p < (const uint8_t*)RAMEND && *p == kPaint;
+       ++p) {
+    ++n;
+  }
+  return n;
+}
+
+class TargetReport {
+ public:
+  TargetReport()
+      : mFirst(0), mFirstSteps(0), mLast(0), mLastSteps(0), mFirst300(0),
+        mWindow(0) {
+    // The empty measuring window, taken out of every step.
+    cycles::start();
+    mWindow = cycles::stop();
+  }
+
+  void beforeStep() { cycles::start(); }
+
+  void afterStep(uint16_t step, uint16_t perSecond) {
+    uint32_t spent = cycles::stop() - mWindow;
+    if (step <= 300) mFirst300 += spent;
+    if (step <= 2 * perSecond) {
+      mFirst += spent;
+      ++mFirstSteps;
+    }
+    if (step > 9 * perSecond) {
+      mLast += spent;
+      ++mLastSteps;
+    }
+  }
+
+  // "P <t> <index> <inverse mass> <position...> <velocity...>"
+  template <class W>
+  void state(const W& world, uint8_t seconds) {
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+      const typename W::ParticleType& p = world.particleAt(i);
+      if (!p.inUse()) continue;
+      Serial.print(F("P "));
+      Serial.print(seconds);
+      Serial.write(' ');
+      Serial.print(i);
+      printScalar(p.inverseMass);
+      for (uint8_t k = 0; k < W::kDimensions; ++k) printScalar(p.position[k]);
+      for (uint8_t k = 0; k < W::kDimensions; ++k) printScalar(p.velocity[k]);
+      Serial.println();
+    }
+    Serial.flush();  // no UART interrupt inside the next timed step
+  }
+
+  // "T <span> <cycles> <steps>" for the first 2 s, the last second and the
+  // first 300 steps (the engine issue's lever figure), and the error flags
+  // ("W <world error> <math errors>").
+  template <class W>
+  void finish(const W& world) {
+    Serial.print(F("T first "));
+    Serial.print(mFirst);
+    Serial.write(' ');
+    Serial.println(mFirstSteps);
+    Serial.print(F("T last "));
+    Serial.print(mLast);
+    Serial.write(' ');
+    Serial.println(mLastSteps);
+    Serial.print(F("T first300 "));
+    Serial.print(mFirst300);
+    Serial.println(F(" 300"));
+    Serial.print(F("W "));
+    Serial.print(world.error());
+    Serial.write(' ');
+    Serial.println(mathErrors());
+    Serial.print(F("# stack headroom "));
+    Serial.println(stackHeadroom());
+  }
+
+ private:
+  uint32_t mFirst;
+  uint16_t mFirstSteps;
+  uint32_t mLast;
+  uint16_t mLastSteps;
+  uint32_t mFirst300;
+  uint32_t mWindow;
+};
+
+}  // namespace scenebench
