@@ -10,8 +10,8 @@
 SCRIPTS := extras/scripts
 DEMO_SECONDS ?= 8
 JOBS ?= 2
-# The demo example: BouncingBalls once it exists, else the minimal Hello.
-DEMO ?= $(firstword $(wildcard examples/BouncingBalls) examples/Hello)
+# The demo example (DEMO=examples/Name runs another one).
+DEMO ?= examples/BouncingBalls
 
 .PHONY: help setup demo test test-host test-target checks sizes bench bench-quick clean
 
