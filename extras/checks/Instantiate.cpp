@@ -128,6 +128,37 @@ checkScalarFunctions<tinyparticle::Fixed<2, 30> >();
 template tinyparticle::Fixed<4, 12>
 checkScalarFunctions<tinyparticle::Fixed<4, 12> >();
 
+// Math for the engine: the multiply by dt (Scaler) and the cheap tests and
+// halving the engine's per-step paths use, for each scalar.
+template class tinyparticle::Scaler<tinyparticle::Q16_16>;
+template class tinyparticle::Scaler<tinyparticle::Float>;
+template <typename S>
+S checkEngineMath() {
+  const tinyparticle::Scaler<S> byDt(S(1.0 / 256));
+  const tinyparticle::Scaler<S> byOther(S(0.3));
+  S r = byDt(S(2)) + byOther(S(-2)) + byDt.factor();
+  r += tinyparticle::detail::half(r);
+  tinyparticle::Vec2<S> v(r, S(1));
+  tinyparticle::Vec3<S> w(S(1), r, S(0));
+  tinyparticle::detail::subtractNonZero(v, v);
+  tinyparticle::detail::subtractNonZero(w, w);
+  const bool flags =
+      tinyparticle::detail::isZero(r) || tinyparticle::detail::isNegative(r) ||
+      tinyparticle::detail::isPositive(r) ||
+      tinyparticle::detail::isZeroVector(v) ||
+      tinyparticle::detail::isZeroVector(w);
+  return r + S(flags ? 1 : 0);
+}
+
+template tinyparticle::Q16_16 checkEngineMath<tinyparticle::Q16_16>();
+template tinyparticle::Q24_8 checkEngineMath<tinyparticle::Q24_8>();
+template tinyparticle::Q8_8 checkEngineMath<tinyparticle::Q8_8>();
+template tinyparticle::Float checkEngineMath<tinyparticle::Float>();
+template tinyparticle::Fixed<2, 30>
+checkEngineMath<tinyparticle::Fixed<2, 30> >();
+template tinyparticle::Fixed<4, 12>
+checkEngineMath<tinyparticle::Fixed<4, 12> >();
+
 // Fixed only: the raw operations and binary-angle atan2.
 template <uint8_t I, uint8_t F>
 int32_t checkFixedFunctions() {

@@ -1,5 +1,7 @@
 // A resting stack of balls on the floor: it neither sinks nor jitters, and
 // with the resolver's shock propagation it comes to rest.
+// (Q16.16 here; StackFloatTest runs the same checks with Float: the two
+// scalars together no longer fit in the Nano's 30 KB of flash.)
 #include <AUnit.h>
 #include <TinyParticle.h>
 
@@ -59,12 +61,6 @@ struct Checks {
 test(RestingStack_Q16_16) {
   float jitter, fastest;
   assertLessOrEqual(Checks<Q16_16>::stack(0, &jitter, &fastest), 0.001f);
-  assertLessOrEqual(jitter, 0.001f);
-  assertLessOrEqual(fastest, 0.001f);
-}
-test(RestingStack_Float) {
-  float jitter, fastest;
-  assertLessOrEqual(Checks<Float>::stack(0, &jitter, &fastest), 0.001f);
   assertLessOrEqual(jitter, 0.001f);
   assertLessOrEqual(fastest, 0.001f);
 }

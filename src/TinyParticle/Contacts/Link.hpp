@@ -7,13 +7,48 @@
 // length to the resolver's rounding. A cable only pulls, and only once
 // stretched to its length; it may bounce back with a restitution.
 //
-// Cost per link and step: one square root and one division.
+// Keeping the energy of a swing. Semi-implicit Euler moves the end along
+// the old tangent, and the contact then removes the velocity along the new
+// direction of the link. That velocity has two parts: what forces built
+// along the link in this step (b = g_r dt for gravity, which the rod's
+// tension cancels, as it should) and what the turn of the link by
+// theta = |v| dt / L explains, about |v| theta. Taking all of it away along
+// the new direction also shortens the tangential speed, by about
+// |v| theta^2 / 2 + b theta per step: a pendulum (L = 1 m, theta0 = 0.5,
+// dt = 1/256 s) lost a third of its energy in 10 s, the 0.15 m lever 94 %,
+// even in double precision, mostly through b theta. Reflecting the turned
+// part instead (restitution 1 for it) helps little: the inward velocity it
+// leaves pulls the end off the circle, and the position correction that
+// follows moves it against gravity. So while a link is closing, the
+// generator first scales the relative velocity by k, with
+//   k^2 = 1 + (dt / L) (2 v_r - |v|^2 dt / L),   k ~ 1 + q (v_r - |v|^2 q / 2),
+// where v_r is the stretching speed and q = dt / L: after the resolver has
+// taken the speed along the link away, |v|^2 has lost only the square of
+// the part that the turn does not explain (the pull b, or a genuine
+// impact), and the tangential speed is what it would be had the velocity
+// turned with the link. A genuine pull along the link (no tangential speed)
+// gains nothing: k scales a zero tangential velocity. The energy error of a
+// swing is then the integrator's own, bounded and O(dt): the pendulum stays
+// within 0.8 % over 10 s at 1/256 s. The square root is expanded: the
+// dropped terms are O(dt^4) per step. In fixed point, a factor k - 1 below
+// eight units of the format is not applied (Margins::smallestFactor()):
+// rounded, it would be off by half of itself every step in the same
+// direction, and add energy (Q16.16 at dt = 1/1024 s, where it is one unit
+// or less: the pendulum gained 14 % in 10 s); there the link keeps its old,
+// lossy behaviour.
+//
+// Cost per link and step: one square root and one division; while closing,
+// a few multiplies more (dt / L is a shift when dt is a power of two).
 #pragma once
 
 #include <stdint.h>
 
+#include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
 #include "../World/Handle.hpp"
+#include "../World/Margins.hpp"
+#include "Resolver.hpp"
 
 namespace tinyparticle {
 
@@ -27,36 +62,93 @@ template <class W, bool kAnchored, bool kRod>
 struct LinkConstraint {
   typedef typename W::Scalar S;
   typedef typename W::Vec V;
+  typedef typename W::ParticleType P;
 
   static void generate(W& world, typename W::ConstraintSlot& slot,
                        uint8_t source) {
-    typename W::ParticleType& a = world.particleAt(slot.a);
+    P& a = world.particleAt(slot.a);
+    P* b = nullptr;
     V delta = a.position;
     if (kAnchored) {
       if (a.isStatic()) return;
-      delta -= slot.params.link.anchor;
+      detail::subtractNonZero(delta, slot.params.link.anchor);
     } else {
-      const typename W::ParticleType& b = world.particleAt(slot.b);
-      if (a.isStatic() && b.isStatic()) return;
-      delta -= b.position;
+      b = &world.particleAt(slot.b);
+      if (a.isStatic() && b->isStatic()) return;
+      detail::subtractNonZero(delta, b->position);
     }
     S lengthSquared = delta.magnitudeSquared();
-    if (lengthSquared == S()) return;  // ends together: no direction
+    if (detail::isZero(lengthSquared)) return;  // ends together: no direction
     S length = sqrt(lengthSquared);
     const S target = slot.params.link.length;
     if (!kRod && length < target) return;  // slack cable
     // The normal pushes a: away from b while too close, towards b while
     // too far (or exactly right: then the contact only removes the closing
     // velocity along the link).
-    S inverse = S(1) / length;
+    const S inverse = S(1) / length;
     S penetration = length - target;
-    if (penetration >= S()) {
-      inverse = -inverse;
-    } else {
-      penetration = -penetration;
+    const bool stretched = !detail::isNegative(penetration);
+    if (!stretched) penetration = -penetration;
+    const V normal = delta * (stretched ? -inverse : inverse);
+    const uint8_t other = kAnchored ? kNoIndex : slot.b;
+    S separating =
+        Resolver<W>::separatingVelocity(world, slot.a, other, normal);
+    if (!detail::isNegative(separating)) {
+      world.addContact(slot.a, other, normal, penetration, source);
+      return;
     }
-    world.addContact(slot.a, kAnchored ? kNoIndex : slot.b, delta * inverse,
-                     penetration, source);
+    // Closing: keep the tangential speed that the turn of the link takes
+    // (see the top of this file): the relative velocity grows by
+    // relative * h, h = q (v_r - |v|^2 q / 2), v_r = -separating the
+    // stretching speed. For a rod the resolver then takes all the speed
+    // along the link away, the part of the growth along it included (the
+    // contact keeps the separating velocity from before: what is left,
+    // h v_r, below 1 % of it, the next step takes). A cable may bounce: only
+    // the part across the link grows, so that the bounce sees the speed
+    // along it as it was.
+    P* movingB = (b != nullptr && !b->isStatic()) ? b : nullptr;
+    V relative;
+    const V* v = &a.velocity;  // to a fixed point: a's own velocity
+    if (movingB != nullptr) {
+      relative =
+          a.isStatic() ? -movingB->velocity : a.velocity - movingB->velocity;
+      v = &relative;
+    }
+    const S q = world.stepScaler()(inverse);  // dt / L
+    const S h = q * (-separating - detail::half(v->magnitudeSquared() * q));
+    if (detail::Margins<S>::kCoarse &&
+        fabs(h) < detail::Margins<S>::smallestFactor()) {
+      // Too small for the scalar (Q16.16 at dt = 1/1024 s, Q24.8): rounded,
+      // it would add energy at every step; the link takes a little instead.
+    } else if (kRod && movingB == nullptr) {
+      a.velocity.addScaled(a.velocity, h);  // a lever, a pendulum
+    } else {
+      V change = *v * h;
+      if (!kRod) change -= normal * (h * separating);
+      if (movingB == nullptr) {
+        a.velocity += change;
+      } else {
+        push(a, *movingB, change);
+      }
+    }
+    world.recordContact(slot.a, other, normal, penetration, separating,
+                        source);
+  }
+
+ private:
+  // A change of the relative velocity between two ends (b moves), shared
+  // in the ratio of their inverse masses, as an impulse is.
+  static void push(P& a, P& b, const V& change) {
+    if (a.isStatic()) {
+      b.velocity -= change;
+      return;
+    }
+    const S shareA = a.inverseMass == b.inverseMass
+                         ? S(0.5)
+                         : a.inverseMass / (a.inverseMass + b.inverseMass);
+    const V changeA = change * shareA;
+    a.velocity += changeA;
+    b.velocity -= change - changeA;
   }
 };
 

@@ -12,6 +12,7 @@
 
 #include <stdint.h>
 
+#include "../Configuration.hpp"
 #include "../Math/Vec.hpp"
 #include "../World/Handle.hpp"
 
@@ -22,6 +23,26 @@ struct PlaneParams {
   Vec<S, Dim> normal;  // unit length, pointing into the allowed side
   S offset;            // m: the plane is dot(normal, x) = offset
 };
+
+namespace detail {
+
+// The member of a vector that holds coordinate `axis`.
+template <class V>
+struct AxisMember;
+template <typename S>
+struct AxisMember<Vec<S, 2> > {
+  typedef Vec<S, 2> V;
+  static S V::*of(uint8_t axis) { return axis == 0 ? &V::x : &V::y; }
+};
+template <typename S>
+struct AxisMember<Vec<S, 3> > {
+  typedef Vec<S, 3> V;
+  static S V::*of(uint8_t axis) {
+    return axis == 0 ? &V::x : (axis == 1 ? &V::y : &V::z);
+  }
+};
+
+}  // namespace detail
 
 template <class W>
 struct PlaneConstraint {
@@ -47,39 +68,65 @@ struct PlaneConstraint {
   // A normal of +1 or -1 along one axis: one coordinate instead of a dot
   // product, and one addition per particle to test it. (One function for
   // all axes, found from the normal, costs a compare per plane and step and
-  // saves flash.)
+  // saves flash. Tried: one pass over the particles for a whole box; it was
+  // no faster on AVR, the walls' data no longer fit in registers.)
   static void generateAxis(W& world, typename W::ConstraintSlot& slot,
                            uint8_t source) {
-    const V normal = slot.params.plane.normal;
+    typedef typename W::ParticleType P;
+    const V& normal = slot.params.plane.normal;
     const S offset = slot.params.plane.offset;
     uint8_t axis = 0;
     while (axis + 1 < W::kDimensions && normal[axis] == S()) ++axis;
     const bool positive = normal[axis] > S();
+    // The coordinate as a member pointer: one load at a fixed offset per
+    // particle, where v[axis] would select the component every time.
+    S V::*const along = detail::AxisMember<V>::of(axis);
     // With the normal +e: penetration = offset - (x - r), a contact from
     // -margin on, i.e. while x - r <= offset + margin. With -e (offset holds
     // minus the bound): penetration = offset + (x + r), while
-    // x + r >= -(offset + margin).
+    // x + r >= -(offset + margin). The loops only test; the rare contact is
+    // made out of line, so that the loops keep their values in registers.
     const S limit = offset + W::contactMargin();
-    const S negativeLimit = -limit;
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      const typename W::ParticleType& p = world.particleAt(i);
-      if (!isTarget(p)) continue;
-      const S coordinate = p.position[axis];
-      if (positive) {
-        const S side = coordinate - p.radius;
-        if (side <= limit) {
-          world.addContact(i, kNoIndex, normal, offset - side, source);
+    P* p = &world.particleAt(0);
+    if (positive) {
+      for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+        if (!isTarget(*p)) continue;
+        const S side = p->position.*along - p->radius;
+        if (!(side > limit)) {
+          touch(world, normal, along, true, i, offset - side, source);
         }
-      } else {
-        const S side = coordinate + p.radius;
-        if (side >= negativeLimit) {
-          world.addContact(i, kNoIndex, normal, offset + side, source);
+      }
+    } else {
+      const S negativeLimit = -limit;
+      for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+        if (!isTarget(*p)) continue;
+        const S side = p->position.*along + p->radius;
+        if (!(side < negativeLimit)) {
+          touch(world, normal, along, false, i, offset + side, source);
         }
       }
     }
   }
 
  private:
+  // A particle within the margin of an axis plane: the separating velocity
+  // and the acceleration along the normal are that coordinate of the
+  // velocity and of the acceleration, with the normal's sign (exactly what
+  // the dot products give); the sign does not matter for the acceleration,
+  // only whether it is zero (W::isIdle()).
+  TINYPARTICLE_NOINLINE static void touch(W& world, const V& normal,
+                                          S V::*along, bool positive,
+                                          uint8_t i, S penetration,
+                                          uint8_t source) {
+    const typename W::ParticleType& p = world.particleAt(i);
+    const S velocity = p.velocity.*along;
+    const S separating = positive ? velocity : -velocity;
+    const S acceleration =
+        p.acceleration.*along + world.uniformComponent(along);
+    if (W::isIdle(penetration, separating, acceleration, S())) return;
+    world.recordContact(i, kNoIndex, normal, penetration, separating, source);
+  }
+
   static bool isTarget(const typename W::ParticleType& p) {
     typedef typename W::ParticleType P;
     return (p.flags & (P::kInUse | P::kCollides | P::kStatic)) ==

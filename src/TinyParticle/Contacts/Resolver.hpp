@@ -16,20 +16,28 @@
 //  2. moves both particles out of penetration, in the ratio of their inverse
 //     masses;
 //  3. updates the penetration and separating velocity of only those contacts
-//     that share a particle it moved, and in the same pass finds the next
-//     contact to resolve.
+//     that share a particle it moved (none, and no pass over the contacts,
+//     when its particles are in no other contact: a ball alone on the
+//     floor), then finds the next contact to resolve in one pass.
 // It stops when nothing is closing or penetrating, or after the iteration
 // cap (default: twice the number of contacts).
 //
 // Divisions: the share of each particle is 1, 0 or 1/2 when one side is
 // immovable or both masses are equal (walls, pivots, equal balls); only two
 // different masses cost a division per resolved contact.
+//
+// Arithmetic with the contact normal skips the zeros and ones of an axis
+// plane's normal in fixed point (Contact.hpp), and a multiply by dt may be a
+// shift (Scaler).
 #pragma once
 
 #include <stdint.h>
 
+#include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
 #include "../World/Handle.hpp"
+#include "Contact.hpp"
 
 namespace tinyparticle {
 
@@ -40,53 +48,50 @@ struct Resolver {
   typedef typename W::ParticleType P;
   typedef typename W::ContactType C;
 
-  // Resolves the world's contacts; returns the iterations used.
-  static uint8_t resolve(W& world, S dt, uint8_t cap) {
+  // Resolves the world's contacts; returns the iterations used. byDt
+  // multiplies by the step's dt.
+  static uint8_t resolve(W& world, const Scaler<S>& byDt, uint8_t cap) {
     const uint8_t count = world.contactCount();
     if (count == 0) return 0;
-    C* contacts = &world.contactAt(0);
-    uint8_t next = kNoIndex;
-    S worst = (S::max)();
-    for (uint8_t j = 0; j < count; ++j) consider(contacts[j], j, worst, next);
-    uint8_t iterations = 0;
-    while (next != kNoIndex && iterations < cap) {
-      const uint8_t current = next;
-      C& contact = contacts[current];
+    C* const contacts = &world.contactAt(0);
+    // Below these a contact counts as resolved (see worstOf()).
+    const S closing = -W::speedMargin();
+    const S deep = W::contactMargin();
+    if (count == 1) {
+      // A lever or a pendulum: once resolved, the contact is done.
+      if (cap == 0 || !isActive(contacts[0], closing, deep)) return 0;
       Change change;
-      resolveOne(world, contact, dt, change);
+      resolveOne(world, contacts[0], byDt, change);
+      return 1;
+    }
+    uint8_t next = worstOf(contacts, count, closing, deep);
+    if (next == kNoIndex) return 0;
+    // The particles in more than one contact: a resolution changes other
+    // contacts only through them (a ball alone on the floor touches none).
+    Sharing sharing;
+    for (uint8_t j = 0; j < count; ++j) {
+      sharing.add(contacts[j].a);
+      sharing.add(contacts[j].b);
+    }
+    uint8_t iterations = 0;
+    while (iterations < cap) {
+      C& contact = contacts[next];
+      Change change;
+      resolveOne(world, contact, byDt, change);
       ++iterations;
-
-      // Update the contacts that share a particle the resolution changed
-      // (kAllIndex matches no contact), and pick the next one.
-      const uint8_t ta = change.touchedA ? contact.a : kAllIndex;
-      const uint8_t tb = change.touchedB ? contact.b : kAllIndex;
-      next = kNoIndex;
-      worst = (S::max)();
-      for (uint8_t j = 0; j < count; ++j) {
-        if (j == current) continue;  // neither closing nor penetrating now
-        C& c = contacts[j];
-        bool touched = false;
-        if (c.a == ta) {
-          if (change.movedA) c.penetration -= dot(change.moveA, c.normal);
-          touched = true;
-        } else if (c.a == tb) {
-          if (change.movedB) c.penetration -= dot(change.moveB, c.normal);
-          touched = true;
-        }
-        if (c.b == ta) {
-          if (change.movedA) c.penetration += dot(change.moveA, c.normal);
-          touched = true;
-        } else if (c.b == tb) {
-          if (change.movedB) c.penetration += dot(change.moveB, c.normal);
-          touched = true;
-        }
-        if (touched && change.velocity) {
-          c.separatingVelocity = separatingVelocity(world, c);
-        }
-        consider(c, j, worst, next);
+      // (The contact just resolved is neither closing nor penetrating now,
+      // so it is not picked again.)
+      if ((change.touchedA && sharing.isShared(contact.a)) ||
+          (change.touchedB && sharing.isShared(contact.b))) {
+        update(world, contacts, count, next, change);
       }
+      next = worstOf(contacts, count, closing, deep);
+      if (next == kNoIndex) break;
     }
     return iterations;
+  }
+  static uint8_t resolve(W& world, S dt, uint8_t cap) {
+    return resolve(world, Scaler<S>(dt), cap);
   }
 
   static S separatingVelocity(W& world, const C& c) {
@@ -98,12 +103,68 @@ struct Resolver {
   static S separatingVelocity(W& world, uint8_t a, uint8_t b, const V& normal) {
     const P& pa = world.particleAt(a);
     if (b == kNoIndex || world.particleAt(b).isStatic()) {
-      return dot(pa.velocity, normal);
+      return along(pa.velocity, normal);
     }
-    return dot(pa.velocity - world.particleAt(b).velocity, normal);
+    return detail::differenceAlongNormal(pa.velocity,
+                                         world.particleAt(b).velocity, normal);
+  }
+
+  // dot(v, normal) for a contact normal: the same result, without the
+  // multiplies by the zeros and ones of axis planes' normals.
+  static S along(const V& v, const V& normal) {
+    return detail::alongNormal(v, normal);
   }
 
  private:
+  // The index of the contact with the most negative separating velocity
+  // (ties: the lowest index) among those closing (below `closing`,
+  // -World::speedMargin()) or penetrating (deeper than `deep`,
+  // World::contactMargin()); kNoIndex if none. Below the margins a contact
+  // counts as resolved: otherwise corrections that round to one unit of the
+  // scalar (or, in float, that halve forever between a ball and the floor
+  // under it) would be resolved again and again up to the cap. What they
+  // leave is picked up by the next step.
+  static uint8_t worstOf(const C* c, uint8_t count, S closing, S deep) {
+    uint8_t worstIndex = kNoIndex;
+    S worst = (S::max)();
+    for (uint8_t j = 0; j < count; ++j, ++c) {
+      const S separating = c->separatingVelocity;
+      if (separating < worst && isActive(*c, closing, deep)) {
+        worst = separating;
+        worstIndex = j;
+      }
+    }
+    return worstIndex;
+  }
+  static bool isActive(const C& c, S closing, S deep) {
+    return c.separatingVelocity < closing || c.penetration > deep;
+  }
+
+  // Two bits per particle slot: seen in a contact once, and more than once.
+  struct Sharing {
+    // (At least one byte: ISO C++ has no zero-size arrays.)
+    static const uint8_t kBytes = W::kParticleCapacity / 8 + 1;
+    uint8_t once[kBytes];
+    uint8_t many[kBytes];
+
+    Sharing() {
+      for (uint8_t i = 0; i < kBytes; ++i) once[i] = many[i] = 0;
+    }
+    void add(uint8_t i) {
+      if (i >= W::kParticleCapacity) return;  // kNoIndex: scenery
+      const uint8_t bit = bitOf(i);
+      if (once[i >> 3] & bit) {
+        many[i >> 3] |= bit;
+      } else {
+        once[i >> 3] |= bit;
+      }
+    }
+    bool isShared(uint8_t i) const {
+      return i < W::kParticleCapacity && (many[i >> 3] & bitOf(i)) != 0;
+    }
+    static uint8_t bitOf(uint8_t i) { return uint8_t(1u << (i & 7)); }
+  };
+
   struct Change {
     V moveA, moveB;     // how far each particle moved (when moved*)
     bool touchedA;      // a's velocity or position changed
@@ -113,22 +174,44 @@ struct Resolver {
     bool velocity;      // velocities changed
   };
 
-  // Keeps the contact if it is closing or penetrating and worse than
-  // `worst`. Below the margins (World::speedMargin(), contactMargin()) a
-  // contact counts as resolved: otherwise corrections that round to one unit
-  // of the scalar (or, in float, that halve forever between a ball and the
-  // floor under it) would be resolved again and again up to the cap. What
-  // they leave is picked up by the next step.
-  static void consider(const C& c, uint8_t index, S& worst, uint8_t& worstIndex) {
-    if ((c.separatingVelocity < -W::speedMargin() ||
-         c.penetration > W::contactMargin()) &&
-        c.separatingVelocity < worst) {
-      worst = c.separatingVelocity;
-      worstIndex = index;
+  // velocity += normal * dv, move = normal * dx, position += move: one
+  // call per particle (dv or dx may be 0: nothing to multiply then).
+  TINYPARTICLE_NOINLINE static void push(P& p, const V& normal, S dv, S dx,
+                                         V& move) {
+    detail::pushAlongNormal(p.velocity, p.position, move, normal, dv, dx);
+  }
+
+  // After a resolution: the penetration and separating velocity of every
+  // other contact that shares a particle it changed (kAllIndex matches no
+  // contact).
+  static void update(W& world, C* c, uint8_t count, uint8_t current,
+                     const Change& change) {
+    const uint8_t ta = change.touchedA ? c[current].a : kAllIndex;
+    const uint8_t tb = change.touchedB ? c[current].b : kAllIndex;
+    for (uint8_t j = 0; j < count; ++j, ++c) {
+      const uint8_t a = c->a, b = c->b;
+      if (a != ta && a != tb && b != ta && b != tb) continue;
+      if (j == current) continue;
+      if (a == ta) {
+        if (change.movedA) c->penetration -= along(change.moveA, c->normal);
+      } else if (a == tb) {
+        if (change.movedB) c->penetration -= along(change.moveB, c->normal);
+      }
+      if (b == ta) {
+        if (change.movedA) c->penetration += along(change.moveA, c->normal);
+      } else if (b == tb) {
+        if (change.movedB) c->penetration += along(change.moveB, c->normal);
+      }
+      if (change.velocity) {
+        c->separatingVelocity = separatingVelocity(world, *c);
+      }
     }
   }
 
-  static void resolveOne(W& world, C& contact, S dt, Change& change) {
+  // (Out of line: called from two places, and it is large.)
+  TINYPARTICLE_NOINLINE static void resolveOne(W& world, C& contact,
+                                               const Scaler<S>& byDt,
+                                               Change& change) {
     P& a = world.particleAt(contact.a);
     P* b = contact.b != kNoIndex ? &world.particleAt(contact.b) : nullptr;
     bool movesA = !a.isStatic();
@@ -154,22 +237,23 @@ struct Resolver {
     // 1. Velocity.
     const S separating = contact.separatingVelocity;
     S deltaV = S();
-    if (separating < S()) {
+    if (detail::isNegative(separating)) {
       const S restitution = world.restitutionOf(contact.source);
       const bool stacked = movesB && movesA && world.isCollision(contact.source);
       S target = S();
       deltaV = -separating;
-      if (restitution != S() || stacked) {
+      if (!detail::isZero(restitution) || stacked) {
         // The closing velocity that this step's accelerations can have
         // built, along the normal.
-        const S alongA = movesA ? dot(a.acceleration, contact.normal) : S();
-        const S alongB = movesB ? dot(b->acceleration, contact.normal) : S();
-        if (deltaV > (fabs(alongA) + fabs(alongB)) * dt) {
-          if (restitution != S()) {
+        const S alongA = world.accelerationAlong(a, contact.normal);
+        const S alongB = movesB ? world.accelerationAlong(*b, contact.normal)
+                                : S();
+        if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
+          if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing
             // velocity that the relative acceleration built in this step.
             target = -(separating * restitution);
-            S built = (alongA - alongB) * dt;
+            S built = byDt(alongA - alongB);
             if (built < S()) {
               target += restitution * built;
               if (target < S()) target = S();
@@ -201,7 +285,7 @@ struct Resolver {
     // The same split for both corrections: a moves along the normal by its
     // share, b against it by the rest (so the two add up exactly).
     S penetration = contact.penetration;
-    const bool penetrating = penetration > S();
+    const bool penetrating = detail::isPositive(penetration);
     if (penetrating) {
       contact.penetration = S();
     } else {
@@ -220,20 +304,12 @@ struct Resolver {
       penetrationB = penetration - penetrationA;
     }
     if (movesA) {
-      if (change.velocity) a.velocity.addScaled(contact.normal, velocityA);
-      if (penetrating) {
-        change.moveA = contact.normal * penetrationA;
-        a.position += change.moveA;
-        change.movedA = true;
-      }
+      push(a, contact.normal, velocityA, penetrationA, change.moveA);
+      change.movedA = penetrating;
     }
     if (movesB) {
-      if (change.velocity) b->velocity.addScaled(contact.normal, -velocityB);
-      if (penetrating) {
-        change.moveB = contact.normal * -penetrationB;
-        b->position += change.moveB;
-        change.movedB = true;
-      }
+      push(*b, contact.normal, -velocityB, -penetrationB, change.moveB);
+      change.movedB = penetrating;
     }
     change.touchedA = movesA;
     change.touchedB = movesB;

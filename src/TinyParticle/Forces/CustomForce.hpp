@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
 
 namespace tinyparticle {
 
@@ -20,7 +21,7 @@ struct CustomForce {
 
   static void apply(W& world, typename W::ForceSlot& slot, S) {
     const typename W::Vec& force = *slot.params.custom.force;
-    if (force.isZero()) return;
+    if (detail::isZeroVector(force)) return;
     typename W::ParticleType& p = world.particleAt(slot.a);
     p.acceleration.addScaled(force, p.inverseMass);
   }

@@ -1,11 +1,15 @@
 // Gravity: adds a constant acceleration to one particle or to all of them.
 // It never needs a mass or a division: the acceleration goes straight into
-// the accumulator. One slot serves every particle of the world.
+// the accumulator. One slot serves every particle of the world, and then it
+// touches no particle at all: it hands the acceleration to the world, which
+// adds (g dt, computed once per step) to every velocity while it integrates,
+// and counts it wherever the resolver looks at a particle's acceleration.
 #pragma once
 
 #include <stdint.h>
 
 #include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
 #include "../World/Handle.hpp"
 
 namespace tinyparticle {
@@ -20,14 +24,11 @@ struct GravityForce {
   typedef typename W::Scalar S;
 
   static void apply(W& world, typename W::ForceSlot& slot, S) {
-    const typename W::Vec g = slot.params.gravity.acceleration;
+    const typename W::Vec& g = slot.params.gravity.acceleration;
     if (slot.a != kAllIndex) {
       add(world.particleAt(slot.a), g);
-      return;
-    }
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      typename W::ParticleType& p = world.particleAt(i);
-      if (p.inUse()) add(p, g);
+    } else {
+      world.addUniformAcceleration(g);
     }
   }
 
@@ -38,7 +39,7 @@ struct GravityForce {
   static void add(typename W::ParticleType& p, const typename W::Vec& g) {
     if (p.isStatic()) return;
     for (uint8_t k = 0; k < W::kDimensions; ++k) {
-      if (g[k] != S()) p.acceleration[k] += g[k];
+      if (!detail::isZero(g[k])) p.acceleration[k] += g[k];
     }
   }
 };

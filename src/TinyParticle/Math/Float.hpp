@@ -12,6 +12,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #include "MathErrors.hpp"
 #include "Turns.hpp"
@@ -51,7 +52,7 @@ class Float {
   Float operator-(Float b) const { return Float(mValue - b.mValue); }
   Float operator*(Float b) const { return Float(mValue * b.mValue); }
   Float operator/(Float b) const {
-    if (b.mValue == 0.0f) {
+    if (b.isZeroBits()) {
       detail::raiseMathError(MathError::kDivideByZero);
       return mValue > 0.0f ? (max)() : (mValue < 0.0f ? lowest() : Float());
     }
@@ -71,6 +72,15 @@ class Float {
   constexpr bool operator>=(Float b) const { return mValue >= b.mValue; }
 
  private:
+  // x == 0 (either sign) from the bits: a float compare is a library call
+  // on AVR (about 50 cycles), this is a few.
+  bool isZeroBits() const {
+    uint32_t bits;
+    memcpy(&bits, &mValue, sizeof(bits));
+    return (bits & 0x7FFFFFFFul) == 0;
+  }
+  friend Float sqrt(Float x);
+
   float mValue;
 };
 
@@ -82,7 +92,13 @@ inline Float clamp(Float x, Float lo, Float hi) {
 }
 
 inline Float sqrt(Float x) {
-  if (x < Float()) {
+  // x < 0 from the bits (see isZeroBits): the sign set, and neither a zero
+  // nor a NaN.
+  uint32_t bits;
+  memcpy(&bits, &x.mValue, sizeof(bits));
+  const uint32_t magnitude = bits & 0x7FFFFFFFul;
+  if ((bits & 0x80000000ul) != 0 && magnitude != 0 &&
+      magnitude <= 0x7F800000ul) {
     detail::raiseMathError(MathError::kNegativeSqrt);
     return Float();
   }

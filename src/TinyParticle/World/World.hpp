@@ -9,9 +9,12 @@
 // never instantiated, so its code is not linked.
 //
 // A step (step(dt)):
-//  1. force generators add acceleration to their particles' accumulators;
-//  2. semi-implicit Euler: v += a dt, damping (one multiply, skipped when 0),
-//     x += v dt, for every particle that is in use and movable;
+//  1. force generators add acceleration to their particles' accumulators
+//     (gravity for all particles is kept once, as the uniform acceleration);
+//  2. semi-implicit Euler: v += a dt (plus the uniform g dt, computed once),
+//     damping (one multiply, skipped when 0), x += v dt, for every particle
+//     that is in use and movable. When dt is a power of two (1/256 s...),
+//     the multiplies by dt are rounding shifts (Math/Scaler.hpp);
 //  3. contact generators (rods, cables, planes, collisions) fill the contact
 //     pool;
 //  4. the resolver (Contacts/Resolver.hpp) resolves them;
@@ -31,11 +34,14 @@
 #include "../Contacts/Resolver.hpp"
 #include "../Debug/Debug.hpp"
 #include "../Debug/Profile.hpp"
+#include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
 #include "Handle.hpp"
 #include "Margins.hpp"
 #include "Particle.hpp"
 #include "Slots.hpp"
+#include "UniformAcceleration.hpp"
 
 namespace tinyparticle {
 
@@ -52,7 +58,9 @@ class World
               S, Dim,
               World<S, Dim, kParticles, kForces, kConstraints, kContacts> >,
           kConstraints>,
-      private detail::Pool<Contact<S, Dim>, kContacts> {
+      private detail::Pool<Contact<S, Dim>, kContacts>,
+      private detail::UniformAcceleration<Vec<S, Dim>, (kForces > 0)>,
+      private detail::StepScaler<Scaler<S>, (kConstraints > 0)> {
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
                     kConstraints < kAnchorIndex && kContacts < kAnchorIndex,
@@ -77,6 +85,8 @@ class World
   typedef detail::Pool<ForceSlot, kForces> ForcePool;
   typedef detail::Pool<ConstraintSlot, kConstraints> ConstraintPool;
   typedef detail::Pool<ContactType, kContacts> ContactPool;
+  typedef detail::UniformAcceleration<Vec, (kForces > 0)> UniformStore;
+  typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
 
  public:
   constexpr World()
@@ -416,16 +426,21 @@ class World
     TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
-      p.flags = p.inverseMass == S() ? uint8_t(p.flags | ParticleType::kStatic)
-                                     : uint8_t(p.flags & ~ParticleType::kStatic);
+      p.flags = detail::isZero(p.inverseMass)
+                    ? uint8_t(p.flags | ParticleType::kStatic)
+                    : uint8_t(p.flags & ~ParticleType::kStatic);
     }
     TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
+    UniformStore::clearUniform();
     for (uint8_t i = 0; i < kForces; ++i) {
       ForceSlot& f = forceAt(i);
       if (f.apply != nullptr) f.apply(*this, f, dt);
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
-    integrate(dt);
+    // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
+    const Scaler<S> byDt(dt);
+    StepScalerStore::setStepScaler(&byDt);
+    integrate(byDt);
     if (kConstraints != 0) {
       TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
       mContactCount = 0;
@@ -440,10 +455,12 @@ class World
       uint16_t cap = mIterationCap;
       if (cap == 0) cap = uint16_t(2u * mContactCount);
       if (cap > 255) cap = 255;
-      mStats.iterations = Resolver<World>::resolve(*this, dt, uint8_t(cap));
+      mStats.iterations =
+          Resolver<World>::resolve(*this, byDt, uint8_t(cap));
       TINYPARTICLE_PROFILE_END(kProfileResolve);
     }
     for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
+    StepScalerStore::setStepScaler(nullptr);  // byDt ends with the step
     TINYPARTICLE_PROFILE_END(kProfileStep);
   }
 
@@ -487,6 +504,32 @@ class World
   static S contactMargin() { return detail::Margins<S>::depth(); }
   static S speedMargin() { return detail::Margins<S>::speed(); }
 
+  // The acceleration that every movable particle gets in this step besides
+  // its accumulator (gravity added for all particles), m/s^2.
+  Vec uniformAcceleration() const { return UniformStore::uniform(); }
+  // One component of it (&Vec::x, &Vec::y...), without copying the vector.
+  S uniformComponent(S Vec::*component) const {
+    return UniformStore::uniformComponent(component);
+  }
+
+  // For force generators: adds to the uniform acceleration of this step.
+  void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
+
+  // dot(acceleration of p in this step, direction): its accumulator plus
+  // the uniform acceleration; 0 for an immovable particle. (Contact normals
+  // along an axis take no multiply: Contacts/Contact.hpp.)
+  S accelerationAlong(const ParticleType& p, const Vec& direction) const {
+    if (p.isStatic()) return S();
+    if (kForces == 0) return detail::alongNormal(p.acceleration, direction);
+    return detail::sumAlongNormal(p.acceleration, UniformStore::uniform(),
+                                  direction);
+  }
+
+  // During a step, for contact generators: multiplies by the step's dt.
+  const Scaler<S>& stepScaler() const {
+    return StepScalerStore::stepScaler();
+  }
+
   S restitutionOf(uint8_t constraintIndex) const {
     return constraintAt(constraintIndex).restitution;
   }
@@ -498,24 +541,45 @@ class World
   }
 
   // Records a contact for this step, unless it is neither penetrating nor
-  // closing. When the pool is full the least severe contact (largest
-  // separating velocity) gives way to a more severe one; either way one
-  // contact is dropped, counted in stats().dropped, and
+  // closing (see isIdle()). When the pool is full the least severe contact
+  // (largest separating velocity) gives way to a more severe one; either
+  // way one contact is dropped, counted in stats().dropped, and
   // WorldError::kContactsDropped is set.
   void addContact(uint8_t a, uint8_t b, const Vec& normal, S penetration,
                   uint8_t source) {
     const S separating = Resolver<World>::separatingVelocity(*this, a, b, normal);
-    // Touching (or within the margin), not closing, and no acceleration
-    // along the normal: only a push from another contact could make it
-    // close this step, and the next step would catch that. Such contacts
-    // are common (balls side by side on the floor) and skipping them spares
-    // the pool and the resolver's passes. (A ball resting on another one is
-    // kept: the floor stops the lower one, and then they close.)
-    if (penetration <= S() && separating >= S() &&
-        dot(particleAt(a).acceleration, normal) == S() &&
-        (b == kNoIndex || dot(particleAt(b).acceleration, normal) == S())) {
+    // isIdle(), the accelerations computed only when needed.
+    if (!detail::isPositive(penetration) && !detail::isNegative(separating) &&
+        detail::isZero(accelerationAlong(particleAt(a), normal)) &&
+        (b == kNoIndex ||
+         detail::isZero(accelerationAlong(particleAt(b), normal)))) {
       return;
     }
+    recordContact(a, b, normal, penetration, separating, source);
+  }
+
+  // A contact that can be left out: touching (or within the margin), not
+  // closing, and no acceleration along the normal (alongA, alongB: each
+  // particle's, see accelerationAlong()). Only a push from another contact
+  // could make it close this step, and the next step would catch that.
+  // Such contacts are common (balls side by side on the floor) and leaving
+  // them out spares the pool and the resolver's passes. (A ball resting on
+  // another one is kept: the floor stops the lower one, and then they
+  // close.)
+  static bool isIdle(S penetration, S separating, S alongA, S alongB) {
+    return !detail::isPositive(penetration) &&
+           !detail::isNegative(separating) && detail::isZero(alongA) &&
+           detail::isZero(alongB);
+  }
+
+  // addContact() for a generator that has computed the separating velocity
+  // dot(va - vb, normal) itself (more cheaply) and has decided to keep the
+  // contact: it is recorded as it is.
+  // (Out of line: several generators call it, and its rare full-pool path
+  // would fill their loops' registers.)
+  TINYPARTICLE_NOINLINE void recordContact(uint8_t a, uint8_t b,
+                                           const Vec& normal, S penetration,
+                                           S separating, uint8_t source) {
     uint8_t slot = mContactCount;
     if (slot >= kContacts) {
       mError |= WorldError::kContactsDropped;
@@ -557,8 +621,16 @@ class World
     return false;
   }
 
-  void integrate(S dt) {
+  void integrate(const Scaler<S>& byDt) {
     TINYPARTICLE_PROFILE_BEGIN(kProfileIntegrate);
+    // The uniform acceleration's share, the same for every particle.
+    Vec uniformStep;
+    if (kForces != 0) {
+      const Vec& uniform = UniformStore::uniform();
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (!detail::isZero(uniform[k])) uniformStep[k] = byDt(uniform[k]);
+      }
+    }
     S dampingUnit = S();
     bool haveDampingUnit = false;
     for (uint8_t i = 0; i < kParticles; ++i) {
@@ -567,15 +639,16 @@ class World
           ParticleType::kInUse) {
         continue;
       }
-      // Component by component, skipping zeros: gravity alone leaves x's
-      // acceleration at 0, and resting particles have no velocity, and a
-      // compare costs far less than a multiply and an add.
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (p.acceleration[k] != S()) p.velocity[k] += p.acceleration[k] * dt;
+      // One axis at a time, written out: a loop over the axes would select
+      // the component at every access.
+      accelerate(p.velocity.x, p.acceleration.x, uniformStep.x, byDt);
+      accelerate(p.velocity.y, p.acceleration.y, uniformStep.y, byDt);
+      if (Dim == 3) {
+        accelerate(p.velocity[2], p.acceleration[2], uniformStep[2], byDt);
       }
       if (p.damping != 0) {
         if (!haveDampingUnit) {
-          dampingUnit = dt * S(1.0 / 256);
+          dampingUnit = byDt.factor() * S(1.0 / 256);
           haveDampingUnit = true;
         }
         S loss = S(long(p.damping)) * dampingUnit;
@@ -585,11 +658,28 @@ class World
           p.velocity.addScaled(p.velocity, -loss);
         }
       }
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (p.velocity[k] != S()) p.position[k] += p.velocity[k] * dt;
-      }
+      move(p.position.x, p.velocity.x, byDt);
+      move(p.position.y, p.velocity.y, byDt);
+      if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
     }
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
+  }
+
+  // One axis of a step: v += a dt + (uniform a) dt, then x += v dt. Zeros
+  // are skipped: an accumulator is usually empty (gravity is uniform) and
+  // resting particles have no velocity, and a compare costs far less than
+  // a multiply (or a shift) and an add. Inlined: a call would cost more
+  // in saved registers than the work.
+  TINYPARTICLE_ALWAYS_INLINE static void accelerate(S& velocity,
+                                                    S acceleration,
+                                                    S uniformStep,
+                                                    const Scaler<S>& byDt) {
+    if (!detail::isZero(acceleration)) velocity += byDt(acceleration);
+    if (!detail::isZero(uniformStep)) velocity += uniformStep;
+  }
+  TINYPARTICLE_ALWAYS_INLINE static void move(S& position, S velocity,
+                                              const Scaler<S>& byDt) {
+    if (!detail::isZero(velocity)) position += byDt(velocity);
   }
 
   ForceSlot* newForce(ForceId& id, uint8_t a, uint8_t b) {
