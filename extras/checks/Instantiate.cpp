@@ -112,7 +112,7 @@ S checkScalarFunctions() {
   S r = fabs(b) + fmin(a, b) + fmax(a, b) + clamp(a, b, S(1));
   r += sqrt(a) + atan2(a, b) + sin(a) + cos(b);
   r += tinyparticle::sinTurns<S>(t) + tinyparticle::cosTurns<S>(uint16_t(t + 1));
-  r += S::pi() + S::epsilon() + (S::max)() + S::largest() + S::lowest();
+  r += S::pi() + S::epsilon() + S::largest() + S::lowest();
   tinyparticle::Vec3<S> v(a, b, r);
   tinyparticle::Vec2<S> w(a, b);
   r += v.magnitudeAndNormalize() + w.magnitudeAndNormalize();

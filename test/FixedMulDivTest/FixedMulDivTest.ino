@@ -218,14 +218,14 @@ test(resultsNextToTheLimits) {
 
 test(saturationAtBothEnds) {
   clearMathErrors();
-  assertTrue(T(200) * T(200) == (T::max)());
+  assertTrue(T(200) * T(200) == T::largest());
   assertEqual(mathErrors(), (uint8_t) MathError::kOverflow);
   clearMathErrors();
   assertTrue(T(-200) * T(200) == T::lowest());
-  assertTrue(T(30000) / T(0.5) == (T::max)());
+  assertTrue(T(30000) / T(0.5) == T::largest());
   assertTrue(T(-30000) / T(0.5) == T::lowest());
-  assertTrue(T::lowest() * T(-1) == (T::max)());
-  assertTrue(T::lowest() / T(-1) == (T::max)());
+  assertTrue(T::lowest() * T(-1) == T::largest());
+  assertTrue(T::lowest() / T(-1) == T::largest());
   assertEqual(mathErrors(), (uint8_t) MathError::kOverflow);
   // The most negative value itself is reachable without overflow.
   clearMathErrors();
@@ -239,11 +239,11 @@ test(saturationAtBothEnds) {
 
 test(divisionByZeroSaturatesWithTheSign) {
   clearMathErrors();
-  assertTrue(T(3) / T(0) == (T::max)());
+  assertTrue(T(3) / T(0) == T::largest());
   assertEqual(mathErrors(), (uint8_t) MathError::kDivideByZero);
   assertTrue(T(-3) / T(0) == T::lowest());
   assertTrue(T::lowest() / T(0) == T::lowest());
-  assertTrue(T::epsilon() / T(0) == (T::max)());
+  assertTrue(T::epsilon() / T(0) == T::largest());
   assertTrue(T(0) / T(0) == T(0));
   assertEqual(mathErrors(), (uint8_t) MathError::kDivideByZero);
   clearMathErrors();

@@ -26,7 +26,7 @@ static_assert(Q24_8::pi().raw() == 804, "round(pi 2^8)");
 static_assert(Q8_8::pi().raw() == 804, "round(pi 2^8)");
 static_assert(Q16_16::epsilon().raw() == 1, "one step");
 static_assert(Q16_16::lowest().raw() == INT32_MIN, "most negative");
-static_assert((Q16_16::max)().raw() == INT32_MAX, "largest");
+static_assert(Q16_16::largest().raw() == INT32_MAX, "largest");
 
 // Checks that hold for every format; returns the number of failures and
 // prints the first few.
@@ -70,17 +70,17 @@ struct Basics {
     const T e = T::epsilon();
     if (T(1.5) + T(-2.25) != T(-0.75)) f += fail(F("1.5 - 2.25"));
     if (T(1) - e + e != T(1)) f += fail(F("steps"));
-    if ((T::max)() - e + e != (T::max)()) f += fail(F("max - e + e"));
+    if (T::largest() - e + e != T::largest()) f += fail(F("max - e + e"));
     if (T::lowest() + e - e != T::lowest()) f += fail(F("lowest + e - e"));
     if (mathErrors() != 0) f += fail(F("no flag in range"));
     // Saturation at both ends, with the flag.
-    if ((T::max)() + e != (T::max)()) f += fail(F("max + e"));
+    if (T::largest() + e != T::largest()) f += fail(F("max + e"));
     if (mathErrors() != MathError::kOverflow) f += fail(F("flag max + e"));
     clearMathErrors();
     if (T::lowest() - e != T::lowest()) f += fail(F("lowest - e"));
-    if ((T::max)() - T::lowest() != (T::max)()) f += fail(F("max - lowest"));
+    if (T::largest() - T::lowest() != T::largest()) f += fail(F("max - lowest"));
     if (T::lowest() + T::lowest() != T::lowest()) f += fail(F("2 lowest"));
-    if (-T::lowest() != (T::max)()) f += fail(F("-lowest"));
+    if (-T::lowest() != T::largest()) f += fail(F("-lowest"));
     if (mathErrors() != MathError::kOverflow) f += fail(F("flag lowest"));
     clearMathErrors();
     // Compound forms do the same.
@@ -100,12 +100,12 @@ struct Basics {
     if (!(a < b) || !(a <= b) || a > b || a >= b || a == b || !(a != b)) {
       f += fail(F("compare"));
     }
-    if (!(T::lowest() < (T::max)())) f += fail(F("ends"));
+    if (!(T::lowest() < T::largest())) f += fail(F("ends"));
     if (fabs(a) != T(1.5) || fabs(b) != b || fabs(T()) != T()) {
       f += fail(F("fabs"));
     }
     clearMathErrors();
-    if (fabs(T::lowest()) != (T::max)()) f += fail(F("fabs lowest"));
+    if (fabs(T::lowest()) != T::largest()) f += fail(F("fabs lowest"));
     if (mathErrors() != MathError::kOverflow) f += fail(F("fabs flag"));
     if (fmin(a, b) != a || fmax(a, b) != b) f += fail(F("fmin fmax"));
     if (clamp(T(3), a, b) != b || clamp(T(-3), a, b) != a ||
@@ -118,7 +118,7 @@ struct Basics {
         3.14159265f - T::pi().toFloat() > step / 2 + 1e-6f) {
       f += fail(F("pi"));
     }
-    if ((T::max)() != T::largest() || T::epsilon().raw() != 1) {
+    if (T::largest().raw() != T::kRawMax || T::epsilon().raw() != 1) {
       f += fail(F("constants"));
     }
     return f;
@@ -146,11 +146,11 @@ test(comparisonsAndHelpers) {
 test(rangesOfTheFormats) {
   // Q16.16 holds [-32768, 32768), Q24.8 [-8388608, 8388608),
   // Q8.8 [-128, 128), each to within one step.
-  assertNear((Q16_16::max)().toFloat(), 32768.0f, 0.0001f);
+  assertNear(Q16_16::largest().toFloat(), 32768.0f, 0.0001f);
   assertNear(Q16_16::lowest().toFloat(), -32768.0f, 0.0001f);
-  assertNear((Q24_8::max)().toFloat(), 8388608.0f, 1.0f);
+  assertNear(Q24_8::largest().toFloat(), 8388608.0f, 1.0f);
   assertNear(Q24_8::lowest().toFloat(), -8388608.0f, 1.0f);
-  assertNear((Q8_8::max)().toFloat(), 128.0f, 0.004f);
+  assertNear(Q8_8::largest().toFloat(), 128.0f, 0.004f);
   assertNear(Q8_8::lowest().toFloat(), -128.0f, 0.004f);
   assertEqual((int) sizeof(Q8_8), 2);
   assertEqual((int) sizeof(Q16_16), 4);
@@ -165,7 +165,7 @@ test(flagsAreStickyUntilCleared) {
   Q16_16 q = Q16_16(1) / Q16_16();     // divide by zero
   Q16_16 r = sqrt(Q16_16(-2));         // negative sqrt
   Q16_16 fine = Q16_16(2) * Q16_16(3); // raises nothing, clears nothing
-  assertTrue(big == (Q16_16::max)() && q == (Q16_16::max)() && r == Q16_16());
+  assertTrue(big == Q16_16::largest() && q == Q16_16::largest() && r == Q16_16());
   assertTrue(fine == Q16_16(6));
   assertEqual(mathErrors(), (uint8_t) (MathError::kOverflow |
                                        MathError::kDivideByZero |

@@ -192,7 +192,7 @@ test(exactAnglesAndSpecialCases) {
   assertEqual(mathErrors(), (uint8_t) 0);
   // pi does not fit Fixed<2, 30>: atan2 saturates, with the flag.
   typedef Fixed<2, 30> Tiny;
-  assertTrue(atan2(Tiny(0), Tiny(-1)) == (Tiny::max)());
+  assertTrue(atan2(Tiny(0), Tiny(-1)) == Tiny::largest());
   assertEqual(mathErrors(), (uint8_t) MathError::kOverflow);
   clearMathErrors();
 }

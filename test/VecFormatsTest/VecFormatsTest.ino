@@ -107,7 +107,7 @@ struct Lengths {
       const Exact x = value(v.x), y = value(v.y), z = value(v.z);
       const Exact exact = sqrt(x * x + y * y + z * z);
       // Near the top the result may saturate (VecTest checks that).
-      if (exact * (1 + relative) + 2 * step >= value((T::max)())) continue;
+      if (exact * (1 + relative) + 2 * step >= value(T::largest())) continue;
       clearMathErrors();
       const T m = v.magnitude();
       if (mathErrors() != 0) return Exact(1e9);

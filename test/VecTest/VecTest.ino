@@ -78,9 +78,9 @@ test(zeroTinyAndHugeVectors) {
   assertTrue(tiny3.normalize());
   assertNear(tiny3.x.toFloat(), -0.57735f, 0.0001f);
   // The largest vectors: no overflow inside, the result saturates.
-  Vec2<T> big((T::max)(), (T::max)());
+  Vec2<T> big(T::largest(), T::largest());
   assertEqual(mathErrors(), (uint8_t) 0);
-  assertTrue(big.magnitude() == (T::max)());
+  assertTrue(big.magnitude() == T::largest());
   assertEqual(mathErrors(), (uint8_t) MathError::kOverflow);
   clearMathErrors();
   assertTrue(big.normalize());

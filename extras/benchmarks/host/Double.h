@@ -37,7 +37,7 @@ class Double {
          : int32_t(mValue);
   }
 
-  static constexpr Double max() { return Double(DBL_MAX); }
+  static constexpr Double largest() { return Double(DBL_MAX); }
   static constexpr Double lowest() { return Double(-DBL_MAX); }
   static constexpr Double epsilon() { return Double(DBL_MIN); }
   static constexpr Double pi() { return Double(3.14159265358979323846); }
@@ -48,7 +48,7 @@ class Double {
   Double operator/(Double b) const {
     if (b.mValue == 0.0) {
       detail::raiseMathError(MathError::kDivideByZero);
-      return mValue > 0.0 ? max() : (mValue < 0.0 ? lowest() : Double());
+      return mValue > 0.0 ? largest() : (mValue < 0.0 ? lowest() : Double());
     }
     return Double(mValue / b.mValue);
   }

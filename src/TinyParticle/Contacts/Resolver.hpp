@@ -126,7 +126,7 @@ struct Resolver {
   // leave is picked up by the next step.
   static uint8_t worstOf(const C* c, uint8_t count, S closing, S deep) {
     uint8_t worstIndex = kNoIndex;
-    S worst = (S::max)();
+    S worst = S::largest();
     for (uint8_t j = 0; j < count; ++j, ++c) {
       const S separating = c->separatingVelocity;
       if (separating < worst && isActive(*c, closing, deep)) {

@@ -200,9 +200,7 @@ class Fixed {
                      : -int32_t(magnitude(mRaw) >> FracBits);
   }
 
-  // The largest value. Arduino.h defines max(a, b) as a macro, so a sketch
-  // writes (Q16_16::max)() or Q16_16::largest(); library code uses (S::max)().
-  static constexpr Fixed(max)() { return fromRaw(kRawMax); }
+  // The largest value. (Not max(): Arduino.h defines max(a, b) as a macro.)
   static constexpr Fixed largest() { return fromRaw(kRawMax); }
   // The most negative value.
   static constexpr Fixed lowest() { return fromRaw(kRawMin); }

@@ -39,9 +39,8 @@ class Float {
          : int32_t(mValue);
   }
 
-  // The largest finite value. Arduino.h defines max(a, b) as a macro, so a
-  // sketch writes (Float::max)() or Float::largest().
-  static constexpr Float(max)() { return Float(FLT_MAX); }
+  // The largest finite value. (Not max(): Arduino.h defines max(a, b) as a
+  // macro.)
   static constexpr Float largest() { return Float(FLT_MAX); }
   static constexpr Float lowest() { return Float(-FLT_MAX); }
   // The smallest positive normal float.
@@ -54,7 +53,7 @@ class Float {
   Float operator/(Float b) const {
     if (b.isZeroBits()) {
       detail::raiseMathError(MathError::kDivideByZero);
-      return mValue > 0.0f ? (max)() : (mValue < 0.0f ? lowest() : Float());
+      return mValue > 0.0f ? largest() : (mValue < 0.0f ? lowest() : Float());
     }
     return Float(mValue / b.mValue);
   }

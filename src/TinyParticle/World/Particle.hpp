@@ -53,8 +53,8 @@ struct Particle {
   // isImmovable() as of the start of the current step (see kStatic).
   bool isStatic() const { return (flags & kStatic) != 0; }
 
-  // Mass in kg; an immovable particle reports (S::max)().
-  S mass() const { return isImmovable() ? (S::max)() : S(1) / inverseMass; }
+  // Mass in kg; an immovable particle reports S::largest().
+  S mass() const { return isImmovable() ? S::largest() : S(1) / inverseMass; }
 
   void setCollides(bool on) {
     flags = on ? uint8_t(flags | kCollides) : uint8_t(flags & ~kCollides);
