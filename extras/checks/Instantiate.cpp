@@ -172,3 +172,70 @@ template int32_t checkFixedFunctions<16, 16>();
 template int32_t checkFixedFunctions<24, 8>();
 template int32_t checkFixedFunctions<8, 8>();
 template int32_t checkFixedFunctions<2, 30>();
+
+// ---- Testing (src/TinyParticle/Testing/) ---------------------------------
+// The helpers that the test and benchmark sketches share. TinyParticle.hpp
+// does not include them, so they are included here on their own, and every
+// template is instantiated for the scalars its sketches use. Not meant to
+// run. CycleCounter.hpp is AVR-only (Timer1): the avr and macros checks
+// compile it, with its interrupt handler.
+#include "TinyParticle/Testing/BallChecks.hpp"
+#include "TinyParticle/Testing/CollisionChecks.hpp"
+#include "TinyParticle/Testing/MathTestSupport.hpp"
+#include "TinyParticle/Testing/StackChecks.hpp"
+#include "TinyParticle/Testing/VecChecks.hpp"
+#include "TinyParticle/Testing/WorldChecks.hpp"
+#if defined(__AVR__)
+#include "TinyParticle/Testing/CycleCounter.hpp"
+#endif
+
+namespace tinyparticle {
+namespace testing {
+
+template struct WorldChecks<Q16_16>;
+template struct WorldChecks<Float>;
+template struct CollisionChecks<Q16_16>;
+template struct CollisionChecks<Float>;
+template struct StackChecks<Q16_16>;
+template struct StackChecks<Float>;
+template struct BallChecks<Q16_16, 2>;
+template struct BallChecks<Q16_16, 3>;
+template struct BallChecks<Float, 2>;
+template struct BallChecks<Float, 3>;
+template struct VecArithmetic<Q16_16>;
+template struct VecArithmetic<Q24_8>;
+template struct VecArithmetic<Q8_8>;
+template struct VecArithmetic<Float>;
+template struct VecLengths<Q16_16, double>;
+template struct VecLengths<Q24_8, float>;
+template struct VecLengths<Q8_8, double>;
+
+}  // namespace testing
+}  // namespace tinyparticle
+
+// The free helpers, with a stand-in for Serial (any type with print() and
+// println() serves).
+struct CheckPrint {
+  void print(const char*) {}
+  void print(long) {}
+  void println(long) {}
+};
+
+long checkTestingHelpers() {
+  using namespace tinyparticle;
+  testing::XorShift32 random(1);
+  CheckPrint out;
+  testing::printFailure(out, "check", 1, 2, 3);
+  long r = long(random.next() & 0xff);
+  r += testing::randomRaw<int16_t>(random, 15);
+  r += testing::randomRawOfLength<int32_t>(random, 31);
+  r += long(testing::magnitude64(-5));
+  r += long(testing::exactValue<double>(Q24_8(2)));
+  r += long(testing::exactValue<float>(Q8_8(1)));
+#if defined(__AVR__)
+  testing::cycles::begin();
+  testing::cycles::start();
+  r += long(testing::cycles::stop()) + testing::cycles::handlerCycles();
+#endif
+  return r;
+}

@@ -5,54 +5,15 @@
 // scalars together no longer fit in the Nano's 30 KB of flash.)
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/BallChecks.hpp>
 
 using aunit::TestRunner;
-
-template <typename S, uint8_t Dim>
-struct Checks {
-  // 8 balls and 16 contacts keep the world small enough for the Nano's
-  // stack; the scene is the same as the 16-ball one.
-  typedef BallsWorld<S, Dim, 8, 16> W;
-
-  static float energy(const W& w) {
-    float e = 0;
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      const typename W::ParticleType& p = w.particleAt(i);
-      e += 0.1f * (p.velocity.magnitudeSquared().toFloat() / 2 +
-                   9.81f * p.position.y.toFloat());
-    }
-    return e;
-  }
-
-  // Runs 3 s at dt = 1/256. Returns how far any ball got beyond the walls
-  // (its surface past a wall, m); `gain` gets the largest energy rise over
-  // the start (J) and `loss` the energy lost by the end.
-  static float run(float* gain, float* loss) {
-    W w;
-    buildBouncingBalls(w, 8);
-    const float start = energy(w);
-    float outside = 0;
-    *gain = 0;
-    for (uint16_t n = 0; n < 3 * 256; ++n) {
-      w.step(S(1.0 / 256));
-      for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-        const typename W::ParticleType& p = w.particleAt(i);
-        for (uint8_t k = 0; k < Dim; ++k) {
-          float x = p.position[k].toFloat();
-          if (0.03f - x > outside) outside = 0.03f - x;
-          if (x - 0.97f > outside) outside = x - 0.97f;
-        }
-      }
-      float e = energy(w);
-      if (e - start > *gain) *gain = e - start;
-    }
-    *loss = start - energy(w);
-    return outside;
-  }
-};
+// The scene runs in src/TinyParticle/Testing/BallChecks.hpp; the tests
+// below assert on what it measures.
+using tinyparticle::testing::BallChecks;
 
 // (Typedefs: a comma inside a macro argument would split it.)
-typedef Checks<Float, 3> DeepFloat;
+typedef BallChecks<Float, 3> DeepFloat;
 
 // A ball may overlap a wall by one step of travel before the contact pushes
 // it out: at most 3 m/s * dt = 12 mm here. Energy: each correction of a

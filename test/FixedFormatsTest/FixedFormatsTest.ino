@@ -6,8 +6,15 @@
 // flags. The most negative raw value is among the operands.
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/MathTestSupport.hpp>
 
 using aunit::TestRunner;
+// Helpers shared by the math sketches
+// (src/TinyParticle/Testing/MathTestSupport.hpp).
+using tinyparticle::testing::XorShift32;
+using tinyparticle::testing::magnitude64;
+using tinyparticle::testing::printFailure;
+using tinyparticle::testing::randomRawOfLength;
 
 #if defined(EPOXY_DUINO)
 const uint32_t kRandomPairs = 1000000;
@@ -15,18 +22,7 @@ const uint32_t kRandomPairs = 1000000;
 const uint32_t kRandomPairs = 2500;
 #endif
 
-static uint32_t gState = 1234567ul;
-static uint32_t nextRandom() {
-  uint32_t x = gState;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  return gState = x;
-}
-
-static uint64_t magnitude64(int64_t v) {
-  return v < 0 ? uint64_t(0) - uint64_t(v) : uint64_t(v);
-}
+static XorShift32 gRandom(1234567ul);
 
 template <typename T>
 struct Rounding {
@@ -37,10 +33,9 @@ struct Rounding {
   // random sign; sometimes the most negative value.
   static Raw randomRaw() {
     const uint8_t total = T::kTotalBits;
-    const uint8_t bits = uint8_t(nextRandom() % total);
-    if (bits == total - 1 && (nextRandom() & 7) == 0) return T::kRawMin;
-    const uint32_t m = bits == 0 ? 0 : (nextRandom() >> (32 - bits));
-    return (nextRandom() & 1) ? Raw(-int32_t(m)) : Raw(m);
+    const uint8_t bits = uint8_t(gRandom.next() % total);
+    if (bits == total - 1 && (gRandom.next() & 7) == 0) return T::kRawMin;
+    return randomRawOfLength<Raw>(gRandom, bits);
   }
 
   static bool multiplyIsRight(Raw a, Raw b) {
@@ -62,7 +57,7 @@ struct Rounding {
       right = flags == 0 && error <= uint64_t(half) &&
               (error < uint64_t(half) || magnitude64(scaled) > magnitude64(p));
     }
-    if (!right) report(F("multiply"), a, b, r);
+    if (!right) printFailure(Serial, F("multiply"), a, b, r);
     return right;
   }
 
@@ -92,7 +87,7 @@ struct Rounding {
                 (r == 0 || (r < 0) == negative);
       }
     }
-    if (!right) report(F("divide"), a, b, r);
+    if (!right) printFailure(Serial, F("divide"), a, b, r);
     return right;
   }
 
@@ -109,18 +104,8 @@ struct Rounding {
       right = flags == 0 && r >= 0 && (r == 0 || (r2 - 1) * (r2 - 1) <= n4) &&
               n4 < (r2 + 1) * (r2 + 1);
     }
-    if (!right) report(F("sqrt"), x, 0, r);
+    if (!right) printFailure(Serial, F("sqrt"), x, 0, r);
     return right;
-  }
-
-  static void report(const __FlashStringHelper* what, Raw a, Raw b, Raw r) {
-    Serial.print(what);
-    Serial.print(F(" a="));
-    Serial.print((long) a);
-    Serial.print(F(" b="));
-    Serial.print((long) b);
-    Serial.print(F(" got "));
-    Serial.println((long) r);
   }
 
   static uint32_t randomPairs() {

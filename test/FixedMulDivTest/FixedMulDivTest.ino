@@ -8,8 +8,14 @@
 // the portable reference bit for bit.
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/MathTestSupport.hpp>
 
 using aunit::TestRunner;
+// Helpers shared by the math sketches
+// (src/TinyParticle/Testing/MathTestSupport.hpp).
+using tinyparticle::testing::XorShift32;
+using tinyparticle::testing::magnitude64;
+using tinyparticle::testing::printFailure;
 
 typedef Q16_16 T;
 typedef T::Raw Raw;
@@ -34,35 +40,14 @@ static int32_t edge(uint8_t i) {
   return int32_t(pgm_read_dword(&kEdges[i]));
 }
 
-// xorshift32: a fixed sequence, the same on every run and target.
-static uint32_t gState = 2463534242ul;
-static uint32_t nextRandom() {
-  uint32_t x = gState;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  return gState = x;
-}
+static XorShift32 gRandom(2463534242ul);
 // Magnitudes spread evenly over the 31 bit lengths, random sign.
 static int32_t randomRaw() {
-  const uint8_t bits = uint8_t(nextRandom() % 32);
-  uint32_t m = bits == 0 ? 0 : (nextRandom() >> (32 - bits)) | (1ul << (bits - 1));
+  const uint8_t bits = uint8_t(gRandom.next() % 32);
+  uint32_t m =
+      bits == 0 ? 0 : (gRandom.next() >> (32 - bits)) | (1ul << (bits - 1));
   if (m > 0x7ffffffful) m = 0x7ffffffful;
-  return (nextRandom() & 1) ? -int32_t(m) : int32_t(m);
-}
-
-static uint64_t magnitude64(int64_t v) {
-  return v < 0 ? uint64_t(0) - uint64_t(v) : uint64_t(v);
-}
-
-static void report(const __FlashStringHelper* what, Raw a, Raw b, Raw r) {
-  Serial.print(what);
-  Serial.print(F(" a="));
-  Serial.print(a);
-  Serial.print(F(" b="));
-  Serial.print(b);
-  Serial.print(F(" got "));
-  Serial.println(r);
+  return (gRandom.next() & 1) ? -int32_t(m) : int32_t(m);
 }
 
 // r = a * b / 2^16 correctly rounded, or saturated with the flag.
@@ -117,7 +102,7 @@ static bool pairIsRight(Raw a, Raw b) {
   const Raw mRef = T::referenceMultiply(a, b);
   const uint8_t mRefFlags = mathErrors();
   if (!multiplyIsRight(a, b, m, mFlags) || m != mRef || mFlags != mRefFlags) {
-    report(F("multiply"), a, b, m);
+    printFailure(Serial, F("multiply"), a, b, m);
     return false;
   }
   if (b == 0) return true;
@@ -128,7 +113,7 @@ static bool pairIsRight(Raw a, Raw b) {
   const Raw qRef = T::referenceDivide(a, b);
   const uint8_t qRefFlags = mathErrors();
   if (!divideIsRight(a, b, q, qFlags) || q != qRef || qFlags != qRefFlags) {
-    report(F("divide"), a, b, q);
+    printFailure(Serial, F("divide"), a, b, q);
     return false;
   }
   return true;
@@ -180,9 +165,9 @@ test(tiesRoundAwayFromZero) {
 test(resultsNextToTheLimits) {
   uint32_t failures = 0;
   for (uint32_t i = 0; i < kRandomPairs / 20 && failures < 10; ++i) {
-    const int64_t k = int64_t(nextRandom() % 7) - 3;
-    const int64_t target = (nextRandom() & 1) ? -(2147483648ll + k)
-                                              : 2147483648ll + k;
+    const int64_t k = int64_t(gRandom.next() % 7) - 3;
+    const int64_t target = (gRandom.next() & 1) ? -(2147483648ll + k)
+                                                 : 2147483648ll + k;
     // Multiply: b of at least 1.0, a = target 2^16 / b rounded down.
     int32_t b = randomRaw();
     if (b > -65536 && b < 65536) b = b < 0 ? b - 65536 : b + 65536;

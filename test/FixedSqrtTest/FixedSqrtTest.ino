@@ -6,8 +6,12 @@
 // kNegativeSqrt.
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/MathTestSupport.hpp>
 
 using aunit::TestRunner;
+// Helpers shared by the math sketches
+// (src/TinyParticle/Testing/MathTestSupport.hpp).
+using tinyparticle::testing::XorShift32;
 
 typedef Q16_16 T;
 typedef T::Raw Raw;
@@ -20,14 +24,7 @@ const uint32_t kExhaustiveBelow = 1500;
 const uint32_t kRandomValues = 2000;
 #endif
 
-static uint32_t gState = 88172645ul;
-static uint32_t nextRandom() {
-  uint32_t x = gState;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  return gState = x;
-}
+static XorShift32 gRandom(88172645ul);
 
 static bool rootIsRight(Raw x) {
   clearMathErrors();
@@ -78,12 +75,12 @@ test(randomArgumentsAreCorrectlyRounded) {
   uint32_t failures = 0;
   for (uint32_t i = 0; i < kRandomValues && failures < 10; ++i) {
     // All bit lengths equally often.
-    const uint8_t bits = uint8_t(1 + nextRandom() % 31);
-    const Raw x = Raw(nextRandom() >> (32 - bits));
+    const uint8_t bits = uint8_t(1 + gRandom.next() % 31);
+    const Raw x = Raw(gRandom.next() >> (32 - bits));
     if (!rootIsRight(x)) ++failures;
     // Next to a half-way point (k + 1/2)^2 = k^2 + k + 1/4 of x 2^16,
     // where rounding flips.
-    const uint32_t k = nextRandom() >> (9 + nextRandom() % 15);
+    const uint32_t k = gRandom.next() >> (9 + gRandom.next() % 15);
     const uint64_t half = uint64_t(k) * k + k;
     const Raw y = Raw(half >> 16);
     if (!rootIsRight(y) || (y < INT32_MAX && !rootIsRight(Raw(y + 1)))) {

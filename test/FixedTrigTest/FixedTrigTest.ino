@@ -8,9 +8,15 @@
 // float represents the argument exactly (|x| < 256 in Q16_16).
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/MathTestSupport.hpp>
 #include <math.h>
 
 using aunit::TestRunner;
+// Helpers shared by the math sketches
+// (src/TinyParticle/Testing/MathTestSupport.hpp).
+using tinyparticle::testing::XorShift32;
+using tinyparticle::testing::exactValue;
+using tinyparticle::testing::randomRaw;
 
 #if defined(EPOXY_DUINO)
 const uint16_t kAngleStride = 1;     // every binary angle
@@ -24,22 +30,13 @@ typedef float Exact;
 
 static const Exact kTwoPi = Exact(6.283185307179586);
 
-static uint32_t gState = 362436069ul;
-static uint32_t nextRandom() {
-  uint32_t x = gState;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  return gState = x;
-}
+static XorShift32 gRandom(362436069ul);
 
 template <typename T>
 struct Trig {
   typedef typename T::Raw Raw;
 
-  static Exact value(T x) {
-    return Exact(x.raw()) / Exact(int32_t(1) << T::kFracBits);
-  }
+  static Exact value(T x) { return exactValue<Exact>(x); }
   static Exact distance(T x, Exact exact) {
     Exact d = value(x) - exact;
     return d < 0 ? -d : d;
@@ -61,9 +58,7 @@ struct Trig {
 
   // A raw argument whose value the reference type represents exactly.
   static Raw randomAngle(uint8_t maxBits) {
-    const uint8_t bits = uint8_t(nextRandom() % (maxBits + 1));
-    const uint32_t m = bits == 0 ? 0 : nextRandom() >> (32 - bits);
-    return (nextRandom() & 1) ? Raw(-int32_t(m)) : Raw(m);
+    return randomRaw<Raw>(gRandom, maxBits);
   }
 
   // Largest error of sin and cos over random radian arguments of up to

@@ -3,9 +3,15 @@
 // step and relative error.
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/VecChecks.hpp>
 #include <math.h>
 
 using aunit::TestRunner;
+// The arithmetic of VecTest and the length checks of VecLengthTest
+// (src/TinyParticle/Testing/VecChecks.hpp).
+using tinyparticle::testing::VecArithmetic;
+using tinyparticle::testing::VecLengths;
+using tinyparticle::testing::XorShift32;
 
 #if defined(EPOXY_DUINO)
 const uint32_t kRandomVectors = 200000;
@@ -15,168 +21,31 @@ const uint32_t kRandomVectors = 600;
 typedef float Exact;
 #endif
 
-static uint32_t gState = 521288629ul;
-static uint32_t nextRandom() {
-  uint32_t x = gState;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  return gState = x;
-}
+static XorShift32 gRandom(521288629ul);
 
-template <typename S>
-struct Arithmetic {
-  static bool vec2() {
-    Vec2<S> a(S(1), S(-2)), b(S(0.5), S(3));
-    bool ok = a + b == Vec2<S>(S(1.5), S(1)) && a - b == Vec2<S>(S(0.5), S(-5));
-    ok = ok && a * S(2) == Vec2<S>(S(2), S(-4)) && S(2) * a == a * S(2);
-    ok = ok && -a == Vec2<S>(S(-1), S(2));
-    ok = ok && dot(a, b) == S(-5.5) && cross(a, b) == S(4);  // 1*3 - (-2)*0.5
-    ok = ok && a.componentProduct(b) == Vec2<S>(S(0.5), S(-6));
-    Vec2<S> c = a;
-    c.addScaled(b, S(2));  // a + 2b
-    ok = ok && c == Vec2<S>(S(2), S(4));
-    c += a;
-    c -= b;
-    c *= S(0.5);
-    ok = ok && c == Vec2<S>(S(1.25), S(-0.5));
-    ok = ok && a[0] == S(1) && a[1] == S(-2);
-    c[1] = S(7);
-    ok = ok && c.y == S(7) && a.magnitudeSquared() == S(5);
-    ok = ok && Vec2<S>().isZero() && !a.isZero() && a != b;
-    return ok;
-  }
-  static bool vec3() {
-    Vec3<S> a(S(1), S(2), S(3)), b(S(-1), S(0.5), S(2));
-    bool ok = a + b == Vec3<S>(S(0), S(2.5), S(5));
-    ok = ok && a - b == Vec3<S>(S(2), S(1.5), S(1));
-    ok = ok && dot(a, b) == S(6);  // -1 + 1 + 6
-    // a x b = (2*2 - 3*0.5, 3*(-1) - 1*2, 1*0.5 - 2*(-1))
-    ok = ok && cross(a, b) == Vec3<S>(S(2.5), S(-5), S(2.5));
-    ok = ok && dot(cross(a, b), a) == S(0) && dot(cross(a, b), b) == S(0);
-    Vec3<S> c = a;
-    c.addScaled(b, S(-1));
-    ok = ok && c == a - b && a.componentProduct(b) == Vec3<S>(S(-1), S(1), S(6));
-    ok = ok && a[2] == S(3) && a.magnitudeSquared() == S(14) && !a.isZero();
-    c *= S(2);
-    ok = ok && c == Vec3<S>(S(4), S(3), S(2));
-    return ok;
-  }
-};
+// (Typedefs: a comma inside a macro argument would split it.)
+typedef VecLengths<Q24_8, Exact> Lengths24;
+typedef VecLengths<Q8_8, Exact> Lengths8;
 
 test(arithmeticForQ24_8AndQ8_8) {
-  assertTrue(Arithmetic<Q24_8>::vec2());
-  assertTrue(Arithmetic<Q24_8>::vec3());
-  assertTrue(Arithmetic<Q8_8>::vec2());
-  assertTrue(Arithmetic<Q8_8>::vec3());
+  assertTrue(VecArithmetic<Q24_8>::vec2());
+  assertTrue(VecArithmetic<Q24_8>::vec3());
+  assertTrue(VecArithmetic<Q8_8>::vec2());
+  assertTrue(VecArithmetic<Q8_8>::vec3());
 }
 
-template <typename T>
-struct Lengths {
-  typedef typename T::Raw Raw;
-  static Exact value(T x) {
-    return Exact(x.raw()) / Exact(int32_t(1) << T::kFracBits);
-  }
-  // A component with a random bit length (all lengths equally often).
-  static T randomComponent(uint8_t maxBits) {
-    const uint8_t bits = uint8_t(nextRandom() % (maxBits + 1));
-    const uint32_t m = bits == 0 ? 0 : nextRandom() >> (32 - bits);
-    return T::fromRaw((nextRandom() & 1) ? Raw(-int32_t(m)) : Raw(m));
-  }
-
-  // The squared sum is formed with the largest component below 2^W steps,
-  // W = (bits + F - 3) / 2 (Vec.hpp); a longer vector is scaled down to at
-  // least 2^(W - 1) steps first, so its length carries a relative error of
-  // about 1.3 / 2^(W - 1). Allowed: twice that.
-  static Exact relativeError() {
-    const uint8_t w = (T::kTotalBits + T::kFracBits - 3) / 2;
-    return Exact(1) / Exact(int32_t(1) << (w - 2));
-  }
-
-  // Worst magnitude error in steps, beyond relativeError(), for random 3D
-  // and 2D vectors of every length that fits the format. Expected: about
-  // 1.3 steps (three squares rounded, the square root rounded); allowed: 2.
-  static Exact magnitudeError(uint8_t maxBits) {
-    Exact worst = 0;
-    const Exact step = Exact(1) / Exact(int32_t(1) << T::kFracBits);
-    const Exact relative = relativeError();
-    for (uint32_t i = 0; i < kRandomVectors; ++i) {
-      const uint8_t bits = uint8_t(nextRandom() % (maxBits + 1));
-      Vec3<T> v(randomComponent(bits), randomComponent(bits),
-                randomComponent(bits));
-      const Exact x = value(v.x), y = value(v.y), z = value(v.z);
-      const Exact exact = sqrt(x * x + y * y + z * z);
-      // Near the top the result may saturate (VecTest checks that).
-      if (exact * (1 + relative) + 2 * step >= value(T::largest())) continue;
-      clearMathErrors();
-      const T m = v.magnitude();
-      if (mathErrors() != 0) return Exact(1e9);
-      Exact e = fabs(value(m) - exact) - exact * relative;
-      e /= step;
-      if (e > worst) worst = e;
-      // 2D as well.
-      Vec2<T> w(v.x, v.y);
-      const Exact exact2 = sqrt(x * x + y * y);
-      e = (fabs(value(w.magnitude()) - exact2) - exact2 * relative) / step;
-      if (e > worst) worst = e;
-    }
-    return worst;
-  }
-
-  // Worst | |normalize(v)| - 1 | in steps, for random vectors of every
-  // length, and whether any raised a flag or pointed elsewhere (the
-  // normalized vector must be parallel: cross product with v tiny).
-  // Expected: about 2.1 steps (length error 1.3 relative to a length >= 1,
-  // plus each quotient's rounding); allowed: 4.
-  static Exact unitError(uint8_t maxBits, bool* bad) {
-    Exact worst = 0;
-    *bad = false;
-    const Exact step = Exact(1) / Exact(int32_t(1) << T::kFracBits);
-    for (uint32_t i = 0; i < kRandomVectors; ++i) {
-      const uint8_t bits = uint8_t(1 + nextRandom() % maxBits);
-      Vec3<T> v(randomComponent(bits), randomComponent(bits),
-                randomComponent(bits));
-      if (v.isZero()) continue;
-      const Vec3<T> original = v;
-      // magnitudeAndNormalize() returns magnitude(), with the same flag (a
-      // length that does not fit saturates); normalize() raises nothing.
-      clearMathErrors();
-      const T m = v.magnitude();
-      const uint8_t flags = mathErrors();
-      clearMathErrors();
-      Vec3<T> copy = v;
-      const T returned = v.magnitudeAndNormalize();
-      if (mathErrors() != flags || returned != m) *bad = true;
-      clearMathErrors();
-      if (!copy.normalize() || copy != v || mathErrors() != 0) *bad = true;
-      const Exact ux = value(v.x), uy = value(v.y), uz = value(v.z);
-      const Exact e = fabs(sqrt(ux * ux + uy * uy + uz * uz) - 1) / step;
-      if (e > worst) worst = e;
-      // Parallel: |u x (v / |v|)| within a few steps.
-      const Exact ox = value(original.x), oy = value(original.y),
-                  oz = value(original.z);
-      const Exact n = sqrt(ox * ox + oy * oy + oz * oz);
-      const Exact cx = uy * oz - uz * oy, cy = uz * ox - ux * oz,
-                  cz = ux * oy - uy * ox;
-      if (sqrt(cx * cx + cy * cy + cz * cz) / n > 6 * step) *bad = true;
-    }
-    return worst;
-  }
-};
-
 test(q24_8AndQ8_8Magnitudes) {
-  assertLess(Lengths<Q24_8>::magnitudeError(31), Exact(2));
-  assertLess(Lengths<Q8_8>::magnitudeError(15), Exact(2));
+  assertLess(Lengths24::magnitudeError(gRandom, kRandomVectors, 31), Exact(2));
+  assertLess(Lengths8::magnitudeError(gRandom, kRandomVectors, 15), Exact(2));
 }
 
 test(q24_8AndQ8_8Normalize) {
   bool bad;
-  assertLess(Lengths<Q24_8>::unitError(31, &bad), Exact(4));
+  assertLess(Lengths24::unitError(gRandom, kRandomVectors, 31, &bad), Exact(4));
   assertFalse(bad);
-  assertLess(Lengths<Q8_8>::unitError(15, &bad), Exact(4));
+  assertLess(Lengths8::unitError(gRandom, kRandomVectors, 15, &bad), Exact(4));
   assertFalse(bad);
 }
-
 
 void setup() {
 #if !defined(EPOXY_DUINO)

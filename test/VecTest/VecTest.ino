@@ -5,55 +5,19 @@
 // VecLengthTest; Q24_8 and Q8_8: VecFormatsTest.)
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/VecChecks.hpp>
 #include <math.h>
 
 using aunit::TestRunner;
-
-template <typename S>
-struct Arithmetic {
-  static bool vec2() {
-    Vec2<S> a(S(1), S(-2)), b(S(0.5), S(3));
-    bool ok = a + b == Vec2<S>(S(1.5), S(1)) && a - b == Vec2<S>(S(0.5), S(-5));
-    ok = ok && a * S(2) == Vec2<S>(S(2), S(-4)) && S(2) * a == a * S(2);
-    ok = ok && -a == Vec2<S>(S(-1), S(2));
-    ok = ok && dot(a, b) == S(-5.5) && cross(a, b) == S(4);  // 1*3 - (-2)*0.5
-    ok = ok && a.componentProduct(b) == Vec2<S>(S(0.5), S(-6));
-    Vec2<S> c = a;
-    c.addScaled(b, S(2));  // a + 2b
-    ok = ok && c == Vec2<S>(S(2), S(4));
-    c += a;
-    c -= b;
-    c *= S(0.5);
-    ok = ok && c == Vec2<S>(S(1.25), S(-0.5));
-    ok = ok && a[0] == S(1) && a[1] == S(-2);
-    c[1] = S(7);
-    ok = ok && c.y == S(7) && a.magnitudeSquared() == S(5);
-    ok = ok && Vec2<S>().isZero() && !a.isZero() && a != b;
-    return ok;
-  }
-  static bool vec3() {
-    Vec3<S> a(S(1), S(2), S(3)), b(S(-1), S(0.5), S(2));
-    bool ok = a + b == Vec3<S>(S(0), S(2.5), S(5));
-    ok = ok && a - b == Vec3<S>(S(2), S(1.5), S(1));
-    ok = ok && dot(a, b) == S(6);  // -1 + 1 + 6
-    // a x b = (2*2 - 3*0.5, 3*(-1) - 1*2, 1*0.5 - 2*(-1))
-    ok = ok && cross(a, b) == Vec3<S>(S(2.5), S(-5), S(2.5));
-    ok = ok && dot(cross(a, b), a) == S(0) && dot(cross(a, b), b) == S(0);
-    Vec3<S> c = a;
-    c.addScaled(b, S(-1));
-    ok = ok && c == a - b && a.componentProduct(b) == Vec3<S>(S(-1), S(1), S(6));
-    ok = ok && a[2] == S(3) && a.magnitudeSquared() == S(14) && !a.isZero();
-    c *= S(2);
-    ok = ok && c == Vec3<S>(S(4), S(3), S(2));
-    return ok;
-  }
-};
+// vec2() and vec3() check every operation on small values whose results
+// are exact (src/TinyParticle/Testing/VecChecks.hpp).
+using tinyparticle::testing::VecArithmetic;
 
 test(arithmeticForQ16_16AndFloat) {
-  assertTrue(Arithmetic<Q16_16>::vec2());
-  assertTrue(Arithmetic<Q16_16>::vec3());
-  assertTrue(Arithmetic<Float>::vec2());
-  assertTrue(Arithmetic<Float>::vec3());
+  assertTrue(VecArithmetic<Q16_16>::vec2());
+  assertTrue(VecArithmetic<Q16_16>::vec3());
+  assertTrue(VecArithmetic<Float>::vec2());
+  assertTrue(VecArithmetic<Float>::vec3());
 }
 
 test(zeroTinyAndHugeVectors) {

@@ -6,139 +6,38 @@
 // scalars together no longer fit in the Nano's 30 KB of flash.)
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/WorldChecks.hpp>
 
 using aunit::TestRunner;
-
-// ---- helpers ------------------------------------------------------------
-// Static members of a class template rather than function templates: the
-// Arduino builder inserts prototypes before the first function of a sketch,
-// which would split a "template <...>" line from its function.
-template <typename S>
-struct Checks {
-  // One world type for every check: each World type instantiates the engine
-  // again, and flash is 32 KB.
-  typedef World<S, 2, 3, 4, 3, 4> W;
-
-  // Fills every pool one past its capacity. Returns a bit mask of what
-  // behaved: 1 particles, 2 forces, 4 constraints.
-  static int exhaustPools() {
-    W w;
-    typename W::Vec origin;
-    int ok = 0;
-    ParticleId a = w.addParticle(origin, S(1));
-    ParticleId b = w.addParticle(origin, S(1));
-    ParticleId c = w.addParticle(origin, S(1));
-    ParticleId d = w.addParticle(origin, S(1));
-    if (a.isValid() && b.isValid() && c.isValid() && !d.isValid() &&
-        w.particle(d) == nullptr && (w.error() & WorldError::kParticlesFull)) {
-      ok |= 1;
-    }
-    ForceId f;
-    for (uint8_t i = 0; i < 4; ++i) f = w.addGravity(a);
-    ForceId extra = w.addGravity();
-    if (f.isValid() && !extra.isValid() && w.force(extra) == nullptr &&
-        (w.error() & WorldError::kForcesFull)) {
-      ok |= 2;
-    }
-    ConstraintId k;
-    for (uint8_t i = 0; i < 3; ++i) k = w.addRod(a, b, S(1));
-    ConstraintId more = w.addCollisions(S(1));
-    if (k.isValid() && !more.isValid() && w.constraint(more) == nullptr &&
-        (w.error() & WorldError::kConstraintsFull)) {
-      ok |= 4;
-    }
-    return ok;
-  }
-
-  // Removes and re-adds particles, forces and constraints; returns a mask of
-  // the checks that held.
-  static int staleHandles() {
-    W w;
-    typename W::Vec origin;
-    uint8_t ok = 0;
-    ParticleId a = w.addParticle(origin, S(1));
-    ParticleId b = w.addParticle(origin, S(1));
-    if (w.removeParticle(a) && w.particle(a) == nullptr) ok |= 1;
-    w.clearError();
-    if (!w.removeParticle(a) && (w.error() & WorldError::kStaleHandle)) ok |= 2;
-    ParticleId again = w.addParticle(origin, S(2));  // reuses a's slot
-    if (again.index == a.index && again != a && w.particle(a) == nullptr &&
-        w.particle(again) != nullptr && w.particle(b) != nullptr) {
-      ok |= 4;
-    }
-    ForceId f = w.addGravity();
-    w.removeForce(f);
-    ForceId g = w.addGravity();
-    if (w.force(f) == nullptr && w.force(g) != nullptr) ok |= 8;
-    ConstraintId k = w.addCollisions(S(1));
-    w.removeConstraint(k);
-    ConstraintId m = w.addCollisions(S(1));
-    if (w.constraint(k) == nullptr && w.constraint(m) != nullptr) ok |= 16;
-    // A stale particle handle is refused by every function that takes one.
-    w.clearError();
-    if (!w.addSpring(a, again, S(1), S(1)).isValid() &&
-        !w.addRod(again, a, S(1)).isValid() && !w.applyForce(a, origin) &&
-        (w.error() & WorldError::kStaleHandle)) {
-      ok |= 32;
-    }
-    return ok;
-  }
-
-  // Removing a particle removes what refers to it, and only that.
-  static int removalCascade() {
-    W w;
-    typename W::Vec p, push;
-    ParticleId a = w.addParticle(p, S(1));
-    p.x = S(1);
-    ParticleId b = w.addParticle(p, S(1));
-    p.x = S(2);
-    ParticleId c = w.addParticle(p, S(1));
-    ForceId spring = w.addSpring(a, b, S(10), S(1));
-    ForceId custom = w.addCustomForce(a, &push);
-    ForceId gravity = w.addGravity();
-    ForceId cSpring = w.addSpring(c, p, S(1), S(0));
-    ConstraintId rod = w.addRod(b, c, S(1));
-    typename W::Vec up;
-    up.y = S(1);
-    ConstraintId floor = w.addPlane(up, S(-5), S(0.5));
-    uint8_t ok = 0;
-    if (w.removeParticle(b)) ok |= 1;
-    if (w.force(spring) == nullptr && w.constraint(rod) == nullptr) ok |= 2;
-    if (w.force(custom) != nullptr && w.force(gravity) != nullptr &&
-        w.force(cSpring) != nullptr && w.constraint(floor) != nullptr) {
-      ok |= 4;
-    }
-    if (w.particle(a) != nullptr && w.particle(c) != nullptr) ok |= 8;
-    return ok;
-  }
-
-  static int badArguments() {
-    W w;
-    typename W::Vec origin;
-    uint8_t ok = 0;
-    if (!w.addParticle(origin, S(0)).isValid() &&
-        (w.error() & WorldError::kBadArgument)) {
-      ok |= 1;
-    }
-    w.clearError();
-    if (w.error() == 0) ok |= 2;
-    if (!w.addPlane(origin, S(0), S(1)).isValid() &&
-        (w.error() & WorldError::kBadArgument)) {
-      ok |= 4;
-    }
-    return ok;
-  }
-};
+// Each check builds its own world and returns a bit mask of what held: all
+// bits set is a pass (src/TinyParticle/Testing/WorldChecks.hpp).
+using tinyparticle::testing::WorldChecks;
 
 // ---- tests ------------------------------------------------------------------
 
-test(PoolExhaustion_Q16_16) { assertEqual(Checks<Q16_16>::exhaustPools(), 7); }
+// Each pool refuses one object past its capacity: an invalid handle and
+// its full flag (bits: particles, forces, constraints).
+test(PoolExhaustion_Q16_16) {
+  assertEqual(WorldChecks<Q16_16>::exhaustPools(), 7);
+}
 
-test(StaleHandles_Q16_16) { assertEqual(Checks<Q16_16>::staleHandles(), 63); }
+// A removed object's handle is stale everywhere, also once its slot is
+// reused, and every function that takes one refuses it.
+test(StaleHandles_Q16_16) {
+  assertEqual(WorldChecks<Q16_16>::staleHandles(), 63);
+}
 
-test(RemovalCascade_Q16_16) { assertEqual(Checks<Q16_16>::removalCascade(), 15); }
+// Removing a particle removes the forces and constraints that refer to it,
+// and nothing else.
+test(RemovalCascade_Q16_16) {
+  assertEqual(WorldChecks<Q16_16>::removalCascade(), 15);
+}
 
-test(BadArguments_Q16_16) { assertEqual(Checks<Q16_16>::badArguments(), 7); }
+// A massless particle and a plane without a normal are refused with
+// kBadArgument; clearError() clears it.
+test(BadArguments_Q16_16) {
+  assertEqual(WorldChecks<Q16_16>::badArguments(), 7);
+}
 
 // The issue's memory goal: a 2D Q16.16 particle that collides takes at most
 // 36 bytes (the seed's took 68).

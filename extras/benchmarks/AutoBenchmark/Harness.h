@@ -1,6 +1,6 @@
 // The measuring machinery of AutoBenchmark: a cycle counter, operand pools,
 // timing loops and the lines sent over Serial. Included by AutoBenchmark.ino
-// only (it defines globals and an interrupt handler).
+// only (it defines globals, and CycleCounter.hpp an interrupt handler).
 //
 // How a figure is made (the method of the numeric issue):
 //   cycles = (cycles of a loop of K calls to a non-inlined function that does
@@ -14,9 +14,11 @@
 #pragma once
 
 #include <Arduino.h>
+#include <TinyParticle.h>
+#include <TinyParticle/Testing/CycleCounter.hpp>
+#include <TinyParticle/Testing/MathTestSupport.hpp>
 #include <avr/interrupt.h>
 #include <avr/sleep.h>
-#include <util/delay_basic.h>
 
 #ifndef BENCH_CHUNKS
 #define BENCH_CHUNKS 8
@@ -29,39 +31,11 @@ namespace bench {
 const uint8_t kChunk = 32;
 const uint8_t kChunks = BENCH_CHUNKS;
 
-// ---------------------------------------------------------------------------
-// Cycle counter: Timer1 counting CPU cycles (prescaler 1), extended past
-// 16 bits by its overflow interrupt. Every other interrupt stays off while the
-// benchmark runs (Timer0's millis() tick is disabled in begin()), and each
-// overflow interrupt's own cycles are taken out again (calibrated in begin()).
-
-volatile uint16_t gOverflows;
-uint16_t gIsrCycles = 0;
-
-inline void timerStart() {
-  TCCR1B = 0;
-  TCNT1 = 0;
-  TIFR1 = _BV(TOV1);
-  gOverflows = 0;
-  TCCR1B = _BV(CS10);
-}
-
-// Cycles since timerStart(), less the overflow handlers that ran. The count
-// is read while the timer runs: simavr reads a stopped Timer1 as 0.
-inline uint32_t timerStop() {
-  uint8_t sreg = SREG;
-  cli();
-  uint16_t count = TCNT1;
-  uint16_t handled = gOverflows;
-  uint16_t overflows = handled;
-  // A wrap whose handler has not run yet, and that came before the read.
-  if ((TIFR1 & _BV(TOV1)) && count < 0x8000) ++overflows;
-  TCCR1B = 0;
-  TIFR1 = _BV(TOV1);
-  SREG = sreg;
-  return ((uint32_t(overflows) << 16) | count) -
-         uint32_t(handled) * gIsrCycles;
-}
+// The cycle counter (Timer1 extended by its overflow interrupt, whose own
+// cycles are taken out; src/TinyParticle/Testing/CycleCounter.hpp). Every
+// other interrupt stays off while the benchmark runs: begin() stops Timer0's
+// millis() tick.
+namespace cycles = tinyparticle::testing::cycles;
 
 // ---------------------------------------------------------------------------
 // Output. Every value goes out as fixed-width hex of its bits, so the host
@@ -132,15 +106,11 @@ template <> inline volatile float& sink<float>() { return gSinkF; }
 // kind, so every type sees the same draws: int32, Q16.16 and Q24.8 get the
 // same raw operands, and float gets the Q16.16 values.
 
-uint32_t gRandom;
-inline void reseed(uint32_t seed) { gRandom = seed; }
-inline uint32_t random32() {
-  uint32_t x = gRandom;
-  x ^= x << 13;
-  x ^= x >> 17;
-  x ^= x << 5;
-  return gRandom = x;
+tinyparticle::testing::XorShift32 gRandom(1);
+inline void reseed(uint32_t seed) {
+  gRandom = tinyparticle::testing::XorShift32(seed);
 }
+inline uint32_t random32() { return gRandom.next(); }
 // Uniform in [0, 1).
 inline float randomUnit() { return float(random32() >> 8) * (1.0f / 16777216.0f); }
 
@@ -177,17 +147,17 @@ BENCH_NOINLINE R emptyUnary(P a) {
 template <typename P, typename R>
 BENCH_NOINLINE uint32_t timeBinary(R (*f)(P, P)) {
   volatile P* p = pool<P>();
-  timerStart();
+  cycles::start();
   for (uint8_t i = 0; i < kChunk; ++i) sink<R>() = f(p[i], p[kChunk + i]);
-  return timerStop();
+  return cycles::stop();
 }
 
 template <typename P, typename R>
 BENCH_NOINLINE uint32_t timeUnary(R (*f)(P)) {
   volatile P* p = pool<P>();
-  timerStart();
+  cycles::start();
   for (uint8_t i = 0; i < kChunk; ++i) sink<R>() = f(p[i]);
-  return timerStop();
+  return cycles::stop();
 }
 
 // The inlined loops: Op::apply is expanded in place.
@@ -195,19 +165,19 @@ template <typename Op>
 BENCH_NOINLINE uint32_t timeBinaryInline() {
   typedef typename Op::P P;
   volatile P* p = pool<P>();
-  timerStart();
+  cycles::start();
   for (uint8_t i = 0; i < kChunk; ++i) {
     sink<typename Op::R>() = Op::apply(p[i], p[kChunk + i]);
   }
-  return timerStop();
+  return cycles::stop();
 }
 template <typename Op>
 BENCH_NOINLINE uint32_t timeUnaryInline() {
   typedef typename Op::P P;
   volatile P* p = pool<P>();
-  timerStart();
+  cycles::start();
   for (uint8_t i = 0; i < kChunk; ++i) sink<typename Op::R>() = Op::apply(p[i]);
-  return timerStop();
+  return cycles::stop();
 }
 
 // The "operations" that do nothing but pass an operand on: inlined baselines.
@@ -268,23 +238,36 @@ inline void printCycles(const __FlashStringHelper* type,
 // A pool filler: writes one chunk of operands for the given type.
 typedef void (*Fill)();
 
-// One binary operation: for every chunk, fill, time the four loops, then send
-// "S <a> <b> <result>" for each operand pair.
-template <typename Op>
-void runBinary(const __FlashStringHelper* type, const __FlashStringHelper* op,
-               uint32_t seed, Fill fill) {
-  typedef typename Op::P P;
-  typedef typename Op::R R;
+// What every operation runs: for each chunk, fill the pool, time the four
+// loops (Kind::time) and send a line per operand set (Kind::send); then the
+// "C" line. Kind is BinaryKind, UnaryKind or VectorKind (below) of the Op.
+template <class Kind>
+void runOperation(const __FlashStringHelper* type,
+                  const __FlashStringHelper* op, uint32_t seed, Fill fill) {
   printBegin(type, op);
   reseed(seed);
   Totals t;
   for (uint8_t c = 0; c < kChunks; ++c) {
     fill();
     Serial.flush();
+    Kind::time(t);
+    Kind::send();
+  }
+  printCycles(type, op, t);
+}
+
+// One binary operation: "S <a> <b> <result>" for each operand pair.
+template <typename Op>
+struct BinaryKind {
+  typedef typename Op::P P;
+  typedef typename Op::R R;
+  static void time(Totals& t) {
     t.call += timeBinary<P, R>(callBinary<Op>);
     t.empty += timeBinary<P, R>(emptyBinary<P, R>);
     t.inlined += timeBinaryInline<Op>();
     t.inlineBase += timeBinaryInline<First<P, R> >();
+  }
+  static void send() {
     volatile P* p = pool<P>();
     for (uint8_t i = 0; i < kChunk; ++i) {
       P a = p[i];
@@ -296,24 +279,20 @@ void runBinary(const __FlashStringHelper* type, const __FlashStringHelper* op,
       Serial.println();
     }
   }
-  printCycles(type, op, t);
-}
+};
 
+// One unary operation: "S <a> <result>".
 template <typename Op>
-void runUnary(const __FlashStringHelper* type, const __FlashStringHelper* op,
-              uint32_t seed, Fill fill) {
+struct UnaryKind {
   typedef typename Op::P P;
   typedef typename Op::R R;
-  printBegin(type, op);
-  reseed(seed);
-  Totals t;
-  for (uint8_t c = 0; c < kChunks; ++c) {
-    fill();
-    Serial.flush();
+  static void time(Totals& t) {
     t.call += timeUnary<P, R>(callUnary<Op>);
     t.empty += timeUnary<P, R>(emptyUnary<P, R>);
     t.inlined += timeUnaryInline<Op>();
     t.inlineBase += timeUnaryInline<First<P, R> >();
+  }
+  static void send() {
     volatile P* p = pool<P>();
     for (uint8_t i = 0; i < kChunk; ++i) {
       P a = p[i];
@@ -323,7 +302,18 @@ void runUnary(const __FlashStringHelper* type, const __FlashStringHelper* op,
       Serial.println();
     }
   }
-  printCycles(type, op, t);
+};
+
+template <typename Op>
+void runBinary(const __FlashStringHelper* type, const __FlashStringHelper* op,
+               uint32_t seed, Fill fill) {
+  runOperation<BinaryKind<Op> >(type, op, seed, fill);
+}
+
+template <typename Op>
+void runUnary(const __FlashStringHelper* type, const __FlashStringHelper* op,
+              uint32_t seed, Fill fill) {
+  runOperation<UnaryKind<Op> >(type, op, seed, fill);
 }
 
 // ---------------------------------------------------------------------------
@@ -344,35 +334,32 @@ BENCH_NOINLINE typename Op::R emptyVector(typename Op::V v) {
 
 template <typename Op>
 BENCH_NOINLINE uint32_t timeVector(typename Op::R (*f)(typename Op::V)) {
-  timerStart();
+  cycles::start();
   for (uint8_t i = 0; i < kChunk; ++i) Op::keep(f(Op::load(i)));
-  return timerStop();
+  return cycles::stop();
 }
 template <typename Op>
 BENCH_NOINLINE uint32_t timeVectorInline(bool inlined) {
-  timerStart();
+  cycles::start();
   if (inlined) {
     for (uint8_t i = 0; i < kChunk; ++i) Op::keep(Op::apply(Op::load(i)));
   } else {
     for (uint8_t i = 0; i < kChunk; ++i) Op::keep(Op::empty(Op::load(i)));
   }
-  return timerStop();
+  return cycles::stop();
 }
 
+// One vector operation: "S <components...> <result...>".
 template <typename Op>
-void runVector(const __FlashStringHelper* type, const __FlashStringHelper* op,
-               uint32_t seed, Fill fill) {
+struct VectorKind {
   typedef typename Op::P P;
-  printBegin(type, op);
-  reseed(seed);
-  Totals t;
-  for (uint8_t c = 0; c < kChunks; ++c) {
-    fill();
-    Serial.flush();
+  static void time(Totals& t) {
     t.call += timeVector<Op>(callVector<Op>);
     t.empty += timeVector<Op>(emptyVector<Op>);
     t.inlined += timeVectorInline<Op>(true);
     t.inlineBase += timeVectorInline<Op>(false);
+  }
+  static void send() {
     volatile P* p = pool<P>();
     for (uint8_t i = 0; i < kChunk; ++i) {
       Serial.write('S');
@@ -381,27 +368,15 @@ void runVector(const __FlashStringHelper* type, const __FlashStringHelper* op,
       Serial.println();
     }
   }
-  printCycles(type, op, t);
+};
+
+template <typename Op>
+void runVector(const __FlashStringHelper* type, const __FlashStringHelper* op,
+               uint32_t seed, Fill fill) {
+  runOperation<VectorKind<Op> >(type, op, seed, fill);
 }
 
 // ---------------------------------------------------------------------------
-
-// Overflow handler cost: a 262,143-cycle busy loop against a 3-cycle one; the
-// difference beyond 262,140 cycles is the handlers that ran.
-inline void calibrate() {
-  gIsrCycles = 0;
-  timerStart();
-  _delay_loop_2(1);
-  uint32_t shortLoop = timerStop();
-  timerStart();
-  _delay_loop_2(0);
-  uint32_t longLoop = timerStop();
-  uint16_t handled = gOverflows;
-  if (handled > 0) {
-    gIsrCycles = uint16_t((longLoop - shortLoop - 262140UL + handled / 2) /
-                          handled);
-  }
-}
 
 inline void begin() {
   Serial.println(F("# TinyParticle AutoBenchmark"));
@@ -410,13 +385,9 @@ inline void begin() {
   Serial.print(F("# F_CPU "));
   Serial.println(F_CPU);
   Serial.flush();
-  TIMSK0 = 0;  // no millis() tick from here on: it would land in the loops
-  TCCR1A = 0;
-  TIMSK1 = _BV(TOIE1);
-  sei();
-  calibrate();
+  cycles::begin();  // no millis() tick from here on: it would land in the loops
   Serial.print(F("# overflow-handler cycles "));
-  Serial.println(gIsrCycles);
+  Serial.println(cycles::handlerCycles());
   Serial.print(F("# samples per operation "));
   Serial.println(uint16_t(kChunks) * kChunk);
 }
@@ -432,5 +403,3 @@ inline void end() {
 }
 
 }  // namespace bench
-
-ISR(TIMER1_OVF_vect) { ++bench::gOverflows; }

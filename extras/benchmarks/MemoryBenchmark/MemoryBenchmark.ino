@@ -18,8 +18,12 @@
 #include "Ladder.h"
 #endif
 #if BENCH_CYCLES
+#include <TinyParticle.h>
+#include <TinyParticle/Testing/CycleCounter.hpp>
 #include <avr/sleep.h>
-#include "CycleCounter.h"
+// The Timer1 cycle counter the benchmarks share (in the library, as a sketch
+// folder cannot include another's files).
+namespace cycles = tinyparticle::testing::cycles;
 #endif
 
 void setup() {

@@ -5,9 +5,12 @@
 
 #include <Arduino.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/CycleCounter.hpp>
 #include <string.h>
 
-#include "CycleCounter.h"
+// The Timer1 cycle counter the benchmarks share (in the library, as a sketch
+// folder cannot include another's files).
+namespace cycles = tinyparticle::testing::cycles;
 
 namespace scenebench {
 

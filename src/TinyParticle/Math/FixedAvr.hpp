@@ -52,6 +52,56 @@ TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
 #define TINYPARTICLE_AVR_ATAN \
   "_ZN12tinyparticle6detail10TrigTablesIvE5kAtanE"
 
+// Pieces of assembly text that several routines share, as string macros:
+// they expand to the very same instructions in each routine (no call, no
+// cycle added). Register names are passed as strings, high byte first;
+// a label is a number, free in the routine that uses the piece. Comments
+// inside the macros are C comments (a // comment would swallow the line
+// continuations).
+
+// x = -x for the 32-bit value in b3:b2:b1:b0: ~x + 1.
+#define TINYPARTICLE_AVR_NEGATE32(b3, b2, b1, b0) \
+  "    com  " b3 "\n"                             \
+  "    com  " b2 "\n"                             \
+  "    com  " b1 "\n"                             \
+  "    neg  " b0 "\n"                             \
+  "    sbci " b1 ", 0xff\n"                       \
+  "    sbci " b2 ", 0xff\n"                       \
+  "    sbci " b3 ", 0xff\n"
+
+// x = |x| (the most negative value stays 0x80000000, its magnitude as
+// unsigned).
+#define TINYPARTICLE_AVR_MAGNITUDE32(b3, b2, b1, b0, label) \
+  "    sbrs " b3 ", 7\n"                                     \
+  "    rjmp " label "f\n"                                    \
+  TINYPARTICLE_AVR_NEGATE32(b3, b2, b1, b0)                  \
+  label ":\n"
+
+// Multiply and divide: T = sign of the result; a (r25..r22) and b
+// (r21..r18) become magnitudes. Uses labels 1 and 2.
+#define TINYPARTICLE_AVR_SIGN_AND_MAGNITUDES                    \
+  "    mov  r30, r25\n"                                         \
+  "    eor  r30, r21\n"                                         \
+  "    bst  r30, 7\n"                                           \
+  TINYPARTICLE_AVR_MAGNITUDE32("r25", "r24", "r23", "r22", "1") \
+  TINYPARTICLE_AVR_MAGNITUDE32("r21", "r20", "r19", "r18", "2")
+
+// Too big: saturate with the sign of the result (T), raise kOverflow;
+// `tmp` is a free register, then on to `done` (a label further on).
+#define TINYPARTICLE_AVR_SATURATE(tmp, done)               \
+  "    lds  " tmp ", " TINYPARTICLE_AVR_FLAGS "\n"          \
+  "    ori  " tmp ", 4\n"                                   \
+  "    sts  " TINYPARTICLE_AVR_FLAGS ", " tmp "\n"          \
+  "    ldi  r22, 0xff\n"                                    \
+  "    ldi  r23, 0xff\n"                                    \
+  "    ldi  r24, 0xff\n"                                    \
+  "    ldi  r25, 0x7f\n"                                    \
+  "    brtc " done "f\n"               /* 0x7fffffff */     \
+  "    subi r22, 0xff\n"               /* + 1: 0x80000000 */ \
+  "    sbci r23, 0xff\n"                                    \
+  "    sbci r24, 0xff\n"                                    \
+  "    sbci r25, 0xff\n"
+
 // ---------------------------------------------------------------------------
 // Q16.16 multiply: round(a * b / 2^16), ties away from zero, saturated.
 //
@@ -68,34 +118,44 @@ TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
 // in a physics scene), twelve when one of them does; when neither does,
 // the product cannot fit and saturates at once.
 // ---------------------------------------------------------------------------
+// Columns 0 to 2 of the multiply (the partial products of a0..a2 and
+// b0..b2 whose weights are 2^0..2^16), into the complemented sum: byte 1 in
+// r30, then bytes 2..4 in r26, r27, r30 (r30 reused once byte 1 is out).
+// Both paths of avrMultiplyQ16 start with them.
+#define TINYPARTICLE_AVR_MUL_COLUMNS_0_TO_2                         \
+  "    ldi  r30, 0x7f\n" /* ~0x80: the rounding constant 2^15 */    \
+  "    ldi  r26, 0xff\n"                                            \
+  "    mul  r22, r18\n"  /* column 0: only the high byte matters */ \
+  "    sub  r30, r1\n"                                              \
+  "    sbci r26, 0\n"                                               \
+  "    ldi  r27, 0xff\n" /* column 1 */                             \
+  "    mul  r22, r19\n"                                             \
+  "    sub  r30, r0\n"                                              \
+  "    sbc  r26, r1\n"                                              \
+  "    sbci r27, 0\n"                                               \
+  "    mul  r23, r18\n"                                             \
+  "    sub  r30, r0\n"                                              \
+  "    sbc  r26, r1\n"                                              \
+  "    sbci r27, 0\n"                                               \
+  "    ldi  r30, 0xff\n" /* column 2 */                             \
+  "    mul  r22, r20\n"                                             \
+  "    sub  r26, r0\n"                                              \
+  "    sbc  r27, r1\n"                                              \
+  "    sbci r30, 0\n"                                               \
+  "    mul  r23, r19\n"                                             \
+  "    sub  r26, r0\n"                                              \
+  "    sbc  r27, r1\n"                                              \
+  "    sbci r30, 0\n"                                               \
+  "    mul  r24, r18\n"                                             \
+  "    sub  r26, r0\n"                                              \
+  "    sbc  r27, r1\n"                                              \
+  "    sbci r30, 0\n"
+
 __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
                                                                 int32_t) {
   asm volatile(
-      // T = sign of the result; a and b become magnitudes (the most
-      // negative value stays 0x80000000, its magnitude as unsigned).
-      "    mov  r30, r25\n"
-      "    eor  r30, r21\n"
-      "    bst  r30, 7\n"
-      "    sbrs r25, 7\n"
-      "    rjmp 1f\n"
-      "    com  r25\n"
-      "    com  r24\n"
-      "    com  r23\n"
-      "    neg  r22\n"
-      "    sbci r23, 0xff\n"
-      "    sbci r24, 0xff\n"
-      "    sbci r25, 0xff\n"
-      "1:\n"
-      "    sbrs r21, 7\n"
-      "    rjmp 2f\n"
-      "    com  r21\n"
-      "    com  r20\n"
-      "    com  r19\n"
-      "    neg  r18\n"
-      "    sbci r19, 0xff\n"
-      "    sbci r20, 0xff\n"
-      "    sbci r21, 0xff\n"
-      "2:\n"
+      // T = sign of the result; a and b become magnitudes.
+      TINYPARTICLE_AVR_SIGN_AND_MAGNITUDES
       // Pick a path by the top bytes (r1 is still zero here).
       "    cpse r25, r1\n"
       "    rjmp 4f\n"
@@ -104,33 +164,7 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
       // ---- a3 == 0 and b3 == 0 (|a|, |b| < 256): nine MULs. The complemented
       // sum: byte 1 in r30, bytes 2..5 in r26, r27, r30, r31 (r30 is reused
       // once the carries of byte 1 are out).
-      "    ldi  r30, 0x7f\n"          // ~0x80: the rounding constant 2^15
-      "    ldi  r26, 0xff\n"
-      "    mul  r22, r18\n"           // column 0: only the high byte matters
-      "    sub  r30, r1\n"
-      "    sbci r26, 0\n"
-      "    ldi  r27, 0xff\n"          // column 1
-      "    mul  r22, r19\n"
-      "    sub  r30, r0\n"
-      "    sbc  r26, r1\n"
-      "    sbci r27, 0\n"
-      "    mul  r23, r18\n"
-      "    sub  r30, r0\n"
-      "    sbc  r26, r1\n"
-      "    sbci r27, 0\n"
-      "    ldi  r30, 0xff\n"          // column 2
-      "    mul  r22, r20\n"
-      "    sub  r26, r0\n"
-      "    sbc  r27, r1\n"
-      "    sbci r30, 0\n"
-      "    mul  r23, r19\n"
-      "    sub  r26, r0\n"
-      "    sbc  r27, r1\n"
-      "    sbci r30, 0\n"
-      "    mul  r24, r18\n"
-      "    sub  r26, r0\n"
-      "    sbc  r27, r1\n"
-      "    sbci r30, 0\n"
+      TINYPARTICLE_AVR_MUL_COLUMNS_0_TO_2
       "    ldi  r31, 0xff\n"          // column 3
       "    mul  r23, r20\n"
       "    sub  r27, r0\n"
@@ -185,33 +219,7 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
       "5:\n"
       // ---- a3 == 0, b3 != 0: twelve MULs; byte 6 goes to r22 once a0 is
       // no longer needed.
-      "    ldi  r30, 0x7f\n"
-      "    ldi  r26, 0xff\n"
-      "    mul  r22, r18\n"           // column 0
-      "    sub  r30, r1\n"
-      "    sbci r26, 0\n"
-      "    ldi  r27, 0xff\n"          // column 1
-      "    mul  r22, r19\n"
-      "    sub  r30, r0\n"
-      "    sbc  r26, r1\n"
-      "    sbci r27, 0\n"
-      "    mul  r23, r18\n"
-      "    sub  r30, r0\n"
-      "    sbc  r26, r1\n"
-      "    sbci r27, 0\n"
-      "    ldi  r30, 0xff\n"          // column 2
-      "    mul  r22, r20\n"
-      "    sub  r26, r0\n"
-      "    sbc  r27, r1\n"
-      "    sbci r30, 0\n"
-      "    mul  r23, r19\n"
-      "    sub  r26, r0\n"
-      "    sbc  r27, r1\n"
-      "    sbci r30, 0\n"
-      "    mul  r24, r18\n"
-      "    sub  r26, r0\n"
-      "    sbc  r27, r1\n"
-      "    sbci r30, 0\n"
+      TINYPARTICLE_AVR_MUL_COLUMNS_0_TO_2
       "    ldi  r31, 0xff\n"          // column 3
       "    mul  r22, r21\n"
       "    sub  r27, r0\n"
@@ -244,18 +252,7 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
       "8:\n"
       // Too big: saturate with the sign of the result, raise kOverflow.
       "    clr  r1\n"
-      "    lds  r26, " TINYPARTICLE_AVR_FLAGS "\n"
-      "    ori  r26, 4\n"
-      "    sts  " TINYPARTICLE_AVR_FLAGS ", r26\n"
-      "    ldi  r22, 0xff\n"
-      "    ldi  r23, 0xff\n"
-      "    ldi  r24, 0xff\n"
-      "    ldi  r25, 0x7f\n"
-      "    brtc 11f\n"                // 0x7fffffff
-      "    subi r22, 0xff\n"          // + 1: 0x80000000
-      "    sbci r23, 0xff\n"
-      "    sbci r24, 0xff\n"
-      "    sbci r25, 0xff\n"
+      TINYPARTICLE_AVR_SATURATE("r26", "11")
       "11:\n"
       "    ret\n"
       // It writes the flags byte, so callers must not keep it in a register.
@@ -276,6 +273,93 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
 // 1.0 needs one word instead of two. Rounding compares twice the remainder
 // with D.
 // ---------------------------------------------------------------------------
+// One quotient word of the long division (the 3-by-2 step of Moller and
+// Granlund): q = floor((u2, u1, u0) / D), given (u2, u1) < D, with v and D
+// as set up below. q ends in r31:r30 and the remainder in (u1, u0), each
+// argument naming a register pair (high, low). setU0 is placed once u2 is
+// no longer read: the second word clears u0 there, as it reuses u2's
+// registers. Uses r28, r29, r0, r1 and labels 1, 2 and 3.
+#define TINYPARTICLE_AVR_DIVIDE_WORD(u2h, u2l, u1h, u1l, u0h, u0l, setU0) \
+  /* (q1 q0) = v * u2 + (u2, u1) in r31:r30, r29:r28 */                   \
+  "    mul  r16, " u2l "\n"                                               \
+  "    movw r28, r0\n"                                                    \
+  "    mul  r17, " u2h "\n"                                               \
+  "    movw r30, r0\n"                                                    \
+  "    mul  r16, " u2h "\n"                                               \
+  "    add  r29, r0\n"                                                    \
+  "    adc  r30, r1\n"                                                    \
+  "    adc  r31, r15\n"                                                   \
+  "    mul  r17, " u2l "\n"                                               \
+  "    add  r29, r0\n"                                                    \
+  "    adc  r30, r1\n"                                                    \
+  "    adc  r31, r15\n"                                                   \
+  "    add  r28, " u1l "\n"                                               \
+  "    adc  r29, " u1h "\n"                                               \
+  "    adc  r30, " u2l "\n"                                               \
+  "    adc  r31, " u2h "\n"                                               \
+  /* r1w = u1 - q1 * d1 (mod 2^16) */                                     \
+  "    mul  r30, r20\n"                                                   \
+  "    sub  " u1l ", r0\n"                                                \
+  "    sbc  " u1h ", r1\n"                                                \
+  "    mul  r30, r21\n"                                                   \
+  "    sub  " u1h ", r0\n"                                                \
+  "    mul  r31, r20\n"                                                   \
+  "    sub  " u1h ", r0\n"                                                \
+  /* (the second word: u0 = 0) */                                         \
+  setU0                                                                   \
+  /* (r1w, u0) -= q1 * d0 (when d0 != 0), then -= D */                    \
+  "    cp   r18, r15\n"                                                   \
+  "    cpc  r19, r15\n"                                                   \
+  "    breq 3f\n"                                                         \
+  "    mul  r30, r18\n"                                                   \
+  "    sub  " u0l ", r0\n"                                                \
+  "    sbc  " u0h ", r1\n"                                                \
+  "    sbci " u1l ", 0\n"                                                 \
+  "    sbci " u1h ", 0\n"                                                 \
+  "    mul  r31, r19\n"                                                   \
+  "    sub  " u1l ", r0\n"                                                \
+  "    sbc  " u1h ", r1\n"                                                \
+  "    mul  r30, r19\n"                                                   \
+  "    sub  " u0h ", r0\n"                                                \
+  "    sbc  " u1l ", r1\n"                                                \
+  "    sbci " u1h ", 0\n"                                                 \
+  "    mul  r31, r18\n"                                                   \
+  "    sub  " u0h ", r0\n"                                                \
+  "    sbc  " u1l ", r1\n"                                                \
+  "    sbci " u1h ", 0\n"                                                 \
+  "3:\n"                                                                  \
+  "    sub  " u0l ", r18\n"                                               \
+  "    sbc  " u0h ", r19\n"                                               \
+  "    sbc  " u1l ", r20\n"                                               \
+  "    sbc  " u1h ", r21\n"                                               \
+  /* q1 + 1 */                                                            \
+  "    subi r30, 0xff\n"                                                  \
+  "    sbci r31, 0xff\n"                                                  \
+  /* r1w >= q0: one less, add D back */                                   \
+  "    cp   " u1l ", r28\n"                                               \
+  "    cpc  " u1h ", r29\n"                                               \
+  "    brcs 1f\n"                                                         \
+  "    subi r30, 1\n"                                                     \
+  "    sbci r31, 0\n"                                                     \
+  "    add  " u0l ", r18\n"                                               \
+  "    adc  " u0h ", r19\n"                                               \
+  "    adc  " u1l ", r20\n"                                               \
+  "    adc  " u1h ", r21\n"                                               \
+  "1:\n"                                                                  \
+  /* remainder >= D (rare): one more */                                   \
+  "    cp   " u0l ", r18\n"                                               \
+  "    cpc  " u0h ", r19\n"                                               \
+  "    cpc  " u1l ", r20\n"                                               \
+  "    cpc  " u1h ", r21\n"                                               \
+  "    brcs 2f\n"                                                         \
+  "    subi r30, 0xff\n"                                                  \
+  "    sbci r31, 0xff\n"                                                  \
+  "    sub  " u0l ", r18\n"                                               \
+  "    sbc  " u0h ", r19\n"                                               \
+  "    sbc  " u1l ", r20\n"                                               \
+  "    sbc  " u1h ", r21\n"                                               \
+  "2:\n"
+
 __attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
                                                               int32_t) {
   asm volatile(
@@ -289,30 +373,8 @@ __attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
       "    push r28\n"
       "    push r29\n"
       "    clr  r15\n"
-      // Sign and magnitudes (the most negative value becomes 0x80000000).
-      "    mov  r30, r25\n"
-      "    eor  r30, r21\n"
-      "    bst  r30, 7\n"
-      "    sbrs r25, 7\n"
-      "    rjmp 1f\n"
-      "    com  r25\n"
-      "    com  r24\n"
-      "    com  r23\n"
-      "    neg  r22\n"
-      "    sbci r23, 0xff\n"
-      "    sbci r24, 0xff\n"
-      "    sbci r25, 0xff\n"
-      "1:\n"
-      "    sbrs r21, 7\n"
-      "    rjmp 2f\n"
-      "    com  r21\n"
-      "    com  r20\n"
-      "    com  r19\n"
-      "    neg  r18\n"
-      "    sbci r19, 0xff\n"
-      "    sbci r20, 0xff\n"
-      "    sbci r21, 0xff\n"
-      "2:\n"
+      // Sign and magnitudes.
+      TINYPARTICLE_AVR_SIGN_AND_MAGNITUDES
       "    clr  r26\n"
       "    clr  r27\n"
       // Normalize D (top bit set), shifting W along: whole bytes first.
@@ -483,154 +545,15 @@ __attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
       "    brcc 14f\n"
       "    rjmp 15f\n"
       "14:\n"
-      "    mul  r16, r26\n"               // (q1 q0) = v * u2 + (u2, u1) in r31:r30, r29:r28
-      "    movw r28, r0\n"
-      "    mul  r17, r27\n"
-      "    movw r30, r0\n"
-      "    mul  r16, r27\n"
-      "    add  r29, r0\n"
-      "    adc  r30, r1\n"
-      "    adc  r31, r15\n"
-      "    mul  r17, r26\n"
-      "    add  r29, r0\n"
-      "    adc  r30, r1\n"
-      "    adc  r31, r15\n"
-      "    add  r28, r24\n"
-      "    adc  r29, r25\n"
-      "    adc  r30, r26\n"
-      "    adc  r31, r27\n"
-      "    mul  r30, r20\n"               // r1w = u1 - q1 * d1 (mod 2^16)
-      "    sub  r24, r0\n"
-      "    sbc  r25, r1\n"
-      "    mul  r30, r21\n"
-      "    sub  r25, r0\n"
-      "    mul  r31, r20\n"
-      "    sub  r25, r0\n"
-      "    cp   r18, r15\n"               // (r1w, u0) -= q1 * d0 (when d0 != 0), then -= D
-      "    cpc  r19, r15\n"
-      "    breq 3f\n"
-      "    mul  r30, r18\n"
-      "    sub  r22, r0\n"
-      "    sbc  r23, r1\n"
-      "    sbci r24, 0\n"
-      "    sbci r25, 0\n"
-      "    mul  r31, r19\n"
-      "    sub  r24, r0\n"
-      "    sbc  r25, r1\n"
-      "    mul  r30, r19\n"
-      "    sub  r23, r0\n"
-      "    sbc  r24, r1\n"
-      "    sbci r25, 0\n"
-      "    mul  r31, r18\n"
-      "    sub  r23, r0\n"
-      "    sbc  r24, r1\n"
-      "    sbci r25, 0\n"
-      "3:\n"
-      "    sub  r22, r18\n"
-      "    sbc  r23, r19\n"
-      "    sbc  r24, r20\n"
-      "    sbc  r25, r21\n"
-      "    subi r30, 0xff\n"              // q1 + 1
-      "    sbci r31, 0xff\n"
-      "    cp   r24, r28\n"               // r1w >= q0: one less, add D back
-      "    cpc  r25, r29\n"
-      "    brcs 1f\n"
-      "    subi r30, 1\n"
-      "    sbci r31, 0\n"
-      "    add  r22, r18\n"
-      "    adc  r23, r19\n"
-      "    adc  r24, r20\n"
-      "    adc  r25, r21\n"
-      "1:\n"
-      "    cp   r22, r18\n"               // remainder >= D (rare): one more
-      "    cpc  r23, r19\n"
-      "    cpc  r24, r20\n"
-      "    cpc  r25, r21\n"
-      "    brcs 2f\n"
-      "    subi r30, 0xff\n"
-      "    sbci r31, 0xff\n"
-      "    sub  r22, r18\n"
-      "    sbc  r23, r19\n"
-      "    sbc  r24, r20\n"
-      "    sbc  r25, r21\n"
-      "2:\n"
+      TINYPARTICLE_AVR_DIVIDE_WORD("r27", "r26", "r25", "r24", "r23", "r22", "")
       "    movw r26, r30\n"               // q1
       "15:\n"
       // Second word q0 from (r1, r0, 0): the remainder is then in
       // r23:r22:r25:r24.
-      "    mul  r16, r24\n"               // (q1 q0) = v * u2 + (u2, u1) in r31:r30, r29:r28
-      "    movw r28, r0\n"
-      "    mul  r17, r25\n"
-      "    movw r30, r0\n"
-      "    mul  r16, r25\n"
-      "    add  r29, r0\n"
-      "    adc  r30, r1\n"
-      "    adc  r31, r15\n"
-      "    mul  r17, r24\n"
-      "    add  r29, r0\n"
-      "    adc  r30, r1\n"
-      "    adc  r31, r15\n"
-      "    add  r28, r22\n"
-      "    adc  r29, r23\n"
-      "    adc  r30, r24\n"
-      "    adc  r31, r25\n"
-      "    mul  r30, r20\n"               // r1w = u1 - q1 * d1 (mod 2^16)
-      "    sub  r22, r0\n"
-      "    sbc  r23, r1\n"
-      "    mul  r30, r21\n"
-      "    sub  r23, r0\n"
-      "    mul  r31, r20\n"
-      "    sub  r23, r0\n"
-      "    clr  r24\n"                    // u0 = 0
-      "    clr  r25\n"
-      "    cp   r18, r15\n"               // (r1w, u0) -= q1 * d0 (when d0 != 0), then -= D
-      "    cpc  r19, r15\n"
-      "    breq 3f\n"
-      "    mul  r30, r18\n"
-      "    sub  r24, r0\n"
-      "    sbc  r25, r1\n"
-      "    sbci r22, 0\n"
-      "    sbci r23, 0\n"
-      "    mul  r31, r19\n"
-      "    sub  r22, r0\n"
-      "    sbc  r23, r1\n"
-      "    mul  r30, r19\n"
-      "    sub  r25, r0\n"
-      "    sbc  r22, r1\n"
-      "    sbci r23, 0\n"
-      "    mul  r31, r18\n"
-      "    sub  r25, r0\n"
-      "    sbc  r22, r1\n"
-      "    sbci r23, 0\n"
-      "3:\n"
-      "    sub  r24, r18\n"
-      "    sbc  r25, r19\n"
-      "    sbc  r22, r20\n"
-      "    sbc  r23, r21\n"
-      "    subi r30, 0xff\n"              // q1 + 1
-      "    sbci r31, 0xff\n"
-      "    cp   r22, r28\n"               // r1w >= q0: one less, add D back
-      "    cpc  r23, r29\n"
-      "    brcs 1f\n"
-      "    subi r30, 1\n"
-      "    sbci r31, 0\n"
-      "    add  r24, r18\n"
-      "    adc  r25, r19\n"
-      "    adc  r22, r20\n"
-      "    adc  r23, r21\n"
-      "1:\n"
-      "    cp   r24, r18\n"               // remainder >= D (rare): one more
-      "    cpc  r25, r19\n"
-      "    cpc  r22, r20\n"
-      "    cpc  r23, r21\n"
-      "    brcs 2f\n"
-      "    subi r30, 0xff\n"
-      "    sbci r31, 0xff\n"
-      "    sub  r24, r18\n"
-      "    sbc  r25, r19\n"
-      "    sbc  r22, r20\n"
-      "    sbc  r23, r21\n"
-      "2:\n"
+      // u0 = 0 goes into r25:r24, free once u2 is read.
+      TINYPARTICLE_AVR_DIVIDE_WORD("r25", "r24", "r23", "r22", "r25", "r24",
+                                   "    clr  r24\n"
+                                   "    clr  r25\n")
       // Round: one more when twice the remainder reaches D.
       "    lsl  r24\n"
       "    rol  r25\n"
@@ -658,29 +581,12 @@ __attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
       "    rjmp 30f\n"
       "    rjmp 31f\n"
       "18:\n"
-      "    com  r25\n"
-      "    com  r24\n"
-      "    com  r23\n"
-      "    neg  r22\n"
-      "    sbci r23, 0xff\n"
-      "    sbci r24, 0xff\n"
-      "    sbci r25, 0xff\n"
+      TINYPARTICLE_AVR_NEGATE32("r25", "r24", "r23", "r22")
       "    brmi 31f\n"
       "    breq 31f\n"
       "30:\n"
       // Too big: saturate with the sign of the result, raise kOverflow.
-      "    lds  r30, " TINYPARTICLE_AVR_FLAGS "\n"
-      "    ori  r30, 4\n"
-      "    sts  " TINYPARTICLE_AVR_FLAGS ", r30\n"
-      "    ldi  r22, 0xff\n"
-      "    ldi  r23, 0xff\n"
-      "    ldi  r24, 0xff\n"
-      "    ldi  r25, 0x7f\n"
-      "    brtc 31f\n"
-      "    subi r22, 0xff\n"
-      "    sbci r23, 0xff\n"
-      "    sbci r24, 0xff\n"
-      "    sbci r25, 0xff\n"
+      TINYPARTICLE_AVR_SATURATE("r30", "31")
       "31:\n"
       "    clr  r1\n"
       "    pop  r29\n"
@@ -1061,26 +967,8 @@ __attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
       "    andi r17, 0x80\n"
       "    sbrc r21, 7\n"
       "    ori  r17, 0x01\n"
-      "    sbrs r25, 7\n"
-      "    rjmp 13f\n"
-      "    com  r25\n"
-      "    com  r24\n"
-      "    com  r23\n"
-      "    neg  r22\n"
-      "    sbci r23, 0xff\n"
-      "    sbci r24, 0xff\n"
-      "    sbci r25, 0xff\n"
-      "13:\n"
-      "    sbrs r21, 7\n"
-      "    rjmp 14f\n"
-      "    com  r21\n"
-      "    com  r20\n"
-      "    com  r19\n"
-      "    neg  r18\n"
-      "    sbci r19, 0xff\n"
-      "    sbci r20, 0xff\n"
-      "    sbci r21, 0xff\n"
-      "14:\n"
+      TINYPARTICLE_AVR_MAGNITUDE32("r25", "r24", "r23", "r22", "13")
+      TINYPARTICLE_AVR_MAGNITUDE32("r21", "r20", "r19", "r18", "14")
       // |y| in r25:r22, |x| in r21:r18: the larger goes to r25:r22; T set
       // when that was |x| (the angle is below pi / 4).
       "    clt\n"
@@ -1279,13 +1167,7 @@ __attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
       "15:\n"
       "    sbrs r17, 7\n"
       "    rjmp 16f\n"
-      "    com  r25\n"
-      "    com  r24\n"
-      "    com  r23\n"
-      "    neg  r22\n"
-      "    sbci r23, 0xff\n"
-      "    sbci r24, 0xff\n"
-      "    sbci r25, 0xff\n"
+      TINYPARTICLE_AVR_NEGATE32("r25", "r24", "r23", "r22")
       "16:\n"
       "    pop  r17\n"
       "    ret\n"

@@ -152,12 +152,12 @@ class World
     if (!check(id)) return false;
     for (uint8_t i = 0; i < kForces; ++i) {
       ForceSlot& f = forceAt(i);
-      if (f.inUse() && (f.a == id.index || f.b == id.index)) freeForce(f);
+      if (f.inUse() && (f.a == id.index || f.b == id.index)) freeSlot(f);
     }
     for (uint8_t i = 0; i < kConstraints; ++i) {
       ConstraintSlot& c = constraintAt(i);
       if (c.inUse() && (c.a == id.index || c.b == id.index)) {
-        freeConstraint(c);
+        freeSlot(c);
       }
     }
     ParticleType& p = particleAt(id.index);
@@ -318,7 +318,7 @@ class World
       mError |= WorldError::kStaleHandle;
       return false;
     }
-    freeForce(*f);
+    freeSlot(*f);
     return true;
   }
 
@@ -415,7 +415,7 @@ class World
       mError |= WorldError::kStaleHandle;
       return false;
     }
-    freeConstraint(*c);
+    freeSlot(*c);
     return true;
   }
 
@@ -696,10 +696,13 @@ class World
     return nullptr;
   }
 
-  void freeForce(ForceSlot& f) {
-    const uint8_t generation = uint8_t(f.generation + 1);
-    f = ForceSlot();
-    f.generation = generation;
+  // Empties a force or constraint slot; its generation moves on, so the
+  // handles to it become stale.
+  template <class Slot>
+  static void freeSlot(Slot& slot) {
+    const uint8_t generation = uint8_t(slot.generation + 1);
+    slot = Slot();
+    slot.generation = generation;
   }
 
   ConstraintSlot* newConstraint(ConstraintId& id, uint8_t a, uint8_t b,
@@ -716,12 +719,6 @@ class World
     mError |= WorldError::kConstraintsFull;
     TINYPARTICLE_DEBUG_PRINT("constraint pool full");
     return nullptr;
-  }
-
-  void freeConstraint(ConstraintSlot& c) {
-    const uint8_t generation = uint8_t(c.generation + 1);
-    c = ConstraintSlot();
-    c.generation = generation;
   }
 
   ForceId addDragFor(uint8_t target, S k1, S k2) {
