@@ -181,7 +181,10 @@ template int32_t checkFixedFunctions<2, 30>();
 // compile it, with its interrupt handler.
 #include "TinyParticle/Testing/BallChecks.hpp"
 #include "TinyParticle/Testing/CollisionChecks.hpp"
+#include "TinyParticle/Testing/ImmovableChecks.hpp"
 #include "TinyParticle/Testing/MathTestSupport.hpp"
+#include "TinyParticle/Testing/PendulumChecks.hpp"
+#include "TinyParticle/Testing/RodEnergyChecks.hpp"
 #include "TinyParticle/Testing/StackChecks.hpp"
 #include "TinyParticle/Testing/VecChecks.hpp"
 #include "TinyParticle/Testing/WorldChecks.hpp"
@@ -198,6 +201,12 @@ template struct CollisionChecks<Q16_16>;
 template struct CollisionChecks<Float>;
 template struct StackChecks<Q16_16>;
 template struct StackChecks<Float>;
+template struct PendulumChecks<Q16_16>;
+template struct PendulumChecks<Float>;
+template struct RodEnergyChecks<Q16_16>;
+template struct RodEnergyChecks<Float>;
+template struct ImmovableChecks<Q16_16>;
+template struct ImmovableChecks<Float>;
 template struct BallChecks<Q16_16, 2>;
 template struct BallChecks<Q16_16, 3>;
 template struct BallChecks<Float, 2>;
