@@ -27,7 +27,7 @@ struct Raw<Fixed<I, F> > {
   static const uint8_t kFrac = F;
   static S from(P p) { return S::fromRaw(p); }
   static P to(S s) { return s.raw(); }
-  // Values made on the target as float (angles, points on a circle).
+  // Values made on the target as float (angles).
   static P fromFloat(float v) { return S(double(v)).raw(); }
   // A raw operand drawn for this format.
   static P fromDraw(int64_t raw) { return P(raw); }
@@ -91,17 +91,6 @@ struct Pools {
       p[i] = T::fromFloat((randomUnit() * 2.0f - 1.0f) * float(M_PI));
     }
   }
-  // Points (x, y) at a uniform angle and a radius log-uniform in
-  // [1/16, 16]: y in a[i], x in b[i].
-  static void points() {
-    volatile P* p = pool<P>();
-    for (uint8_t i = 0; i < kChunk; ++i) {
-      float angle = (randomUnit() * 2.0f - 1.0f) * float(M_PI);
-      float radius = exp((randomUnit() * 8.0f - 4.0f) * float(M_LN2));
-      p[i] = T::fromFloat(radius * ::sinf(angle));
-      p[kChunk + i] = T::fromFloat(radius * ::cosf(angle));
-    }
-  }
   // Vector components whose squares and sum of squares are representable:
   // from 2^-(F/2) up to below sqrt(max / N).
   template <uint8_t N>
@@ -126,7 +115,6 @@ inline void fillTurns() {
 const uint32_t kSeedArithmetic = 0x2545F491UL;
 const uint32_t kSeedPositive = 0x9E3779B9UL;
 const uint32_t kSeedAngles = 0x6A09E667UL;
-const uint32_t kSeedPoints = 0xBB67AE85UL;
 const uint32_t kSeedTurns = 0x3C6EF372UL;
 const uint32_t kSeedVec2 = 0xA54FF53AUL;
 const uint32_t kSeedVec3 = 0x510E527FUL;

@@ -29,7 +29,7 @@ void runScalar(const __FlashStringHelper* name) {
   runBinary<Mul<S> >(name, F("mul"), kSeedArithmetic, Pool::arithmetic);
   runBinary<Div<S> >(name, F("div"), kSeedArithmetic, Pool::arithmetic);
   runUnary<Sqrt<S> >(name, F("sqrt"), kSeedPositive, Pool::positive);
-  runBinary<Atan2<S> >(name, F("atan2"), kSeedPoints, Pool::points);
+  runBinary<Atan2<S> >(name, F("atan2"), kSeedArithmetic, Pool::arithmetic);
   runUnary<Sin<S> >(name, F("sin"), kSeedAngles, Pool::angles);
   runUnary<Cos<S> >(name, F("cos"), kSeedAngles, Pool::angles);
   runUnary<SinTurns<S> >(name, F("sin_turns"), kSeedTurns, fillTurns);
@@ -52,7 +52,7 @@ inline void runSeed() {
   runBinary<SeedMul>(name, F("mul"), kSeedArithmetic, Pool::arithmetic);
   runBinary<SeedDiv>(name, F("div"), kSeedArithmetic, Pool::arithmetic);
   runUnary<SeedSqrt>(name, F("sqrt"), kSeedPositive, Pool::positive);
-  runBinary<SeedAtan2>(name, F("atan2"), kSeedPoints, Pool::points);
+  runBinary<SeedAtan2>(name, F("atan2"), kSeedArithmetic, Pool::arithmetic);
   runVector<SeedMagnitude>(name, F("mag3"), kSeedVec3, Pool::vectors<3>);
   runVector<SeedNormalize>(name, F("norm3"), kSeedVec3, Pool::vectors<3>);
 }

@@ -960,24 +960,23 @@ __attribute__((naked, noinline)) inline int32_t avrSquareRoot(int32_t,
 __attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
                                                                int32_t) {
   asm volatile(
-      // y in r25:r22, x in r21:r18 (signed). r17 keeps the signs: bit 7 for
-      // y < 0, bit 0 for x < 0.
+      // y in r25:r22, x in r21:r18 (signed). T keeps x < 0; r17 keeps y < 0
+      // in bit 7 and, below, whether the larger magnitude was |x| in bit 0.
+      // (T and r17 rather than two bits of r17: fewer cycles to set and test.)
       "    push r17\n"
       "    mov  r17, r25\n"
       "    andi r17, 0x80\n"
-      "    sbrc r21, 7\n"
-      "    ori  r17, 0x01\n"
+      "    bst  r21, 7\n"
       TINYPARTICLE_AVR_MAGNITUDE32("r25", "r24", "r23", "r22", "13")
       TINYPARTICLE_AVR_MAGNITUDE32("r21", "r20", "r19", "r18", "14")
-      // |y| in r25:r22, |x| in r21:r18: the larger goes to r25:r22; T set
-      // when that was |x| (the angle is below pi / 4).
-      "    clt\n"
+      // |y| in r25:r22, |x| in r21:r18: the larger goes to r25:r22; bit 0 of
+      // r17 set when that was |x| (the angle is below pi / 4).
       "    cp   r22, r18\n"
       "    cpc  r23, r19\n"
       "    cpc  r24, r20\n"
       "    cpc  r25, r21\n"
       "    brcc 1f\n"
-      "    set\n"
+      "    ori  r17, 0x01\n"
       "    movw r26, r22\n"
       "    movw r30, r24\n"
       "    movw r22, r18\n"
@@ -1139,12 +1138,13 @@ __attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
       "    add  r18, r24\n"
       "    adc  r19, r25\n"
       "11:\n"
-      // a = atan in r19:r18. Not T (the larger was |y|): pi / 2 - a,
-      // 102944 = round(pi / 2 * 2^16). Result in r24:r23:r22.
+      // a = atan in r19:r18. The larger was |y| (bit 0 of r17 clear):
+      // pi / 2 - a, 102944 = round(pi / 2 * 2^16). Result in r24:r23:r22.
       "    clr  r1\n"
       "    clr  r24\n"
       "    movw r22, r18\n"
-      "    brts 12f\n"
+      "    sbrc r17, 0\n"
+      "    rjmp 12f\n"
       "    ldi  r22, 0x20\n"
       "    ldi  r23, 0x92\n"
       "    ldi  r24, 0x01\n"
@@ -1154,8 +1154,7 @@ __attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
       "12:\n"
       // x < 0: pi - a (205887 = 0x3243f); y < 0: -a.
       "    clr  r25\n"
-      "    sbrs r17, 0\n"
-      "    rjmp 15f\n"
+      "    brtc 15f\n"
       "    ldi  r18, 0x3f\n"
       "    ldi  r19, 0x24\n"
       "    ldi  r20, 0x03\n"
