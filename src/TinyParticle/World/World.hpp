@@ -160,10 +160,7 @@ class World
         freeSlot(c);
       }
     }
-    ParticleType& p = particleAt(id.index);
-    const uint8_t generation = uint8_t(p.generation + 1);
-    p = ParticleType();
-    p.generation = generation;
+    freeSlot(particleAt(id.index));
     return true;
   }
 
@@ -307,20 +304,10 @@ class World
 
   // The slot, to read or change its parameters; null if stale.
   ForceSlot* force(ForceId id) {
-    if (id.index >= kForces) return nullptr;
-    ForceSlot& f = forceAt(id.index);
-    return f.inUse() && f.generation == id.generation ? &f : nullptr;
+    return id.index < kForces ? liveSlot(forceAt(id.index), id) : nullptr;
   }
 
-  bool removeForce(ForceId id) {
-    ForceSlot* f = force(id);
-    if (f == nullptr) {
-      mError |= WorldError::kStaleHandle;
-      return false;
-    }
-    freeSlot(*f);
-    return true;
-  }
+  bool removeForce(ForceId id) { return removeSlot(force(id)); }
 
   // ---- Constraints (contact generators) ----------------------------------
   // Each returns an invalid id and sets an error bit when the pool is full
@@ -404,19 +391,12 @@ class World
   }
 
   ConstraintSlot* constraint(ConstraintId id) {
-    if (id.index >= kConstraints) return nullptr;
-    ConstraintSlot& c = constraintAt(id.index);
-    return c.inUse() && c.generation == id.generation ? &c : nullptr;
+    return id.index < kConstraints ? liveSlot(constraintAt(id.index), id)
+                                   : nullptr;
   }
 
   bool removeConstraint(ConstraintId id) {
-    ConstraintSlot* c = constraint(id);
-    if (c == nullptr) {
-      mError |= WorldError::kStaleHandle;
-      return false;
-    }
-    freeSlot(*c);
-    return true;
+    return removeSlot(constraint(id));
   }
 
   // ---- Stepping -----------------------------------------------------------
@@ -608,9 +588,27 @@ class World
 
  private:
   bool isLive(ParticleId id) const {
-    if (id.index >= kParticles) return false;
-    const ParticleType& p = particleAt(id.index);
-    return p.inUse() && p.generation == id.generation;
+    return id.index < kParticles &&
+           liveSlot(particleAt(id.index), id) != nullptr;
+  }
+
+  // The slot if it is in use and of the handle's generation, else null: the
+  // one test behind every handle lookup (particles, forces, constraints).
+  template <typename Slot, typename Id>
+  static Slot* liveSlot(Slot& slot, Id id) {
+    return slot.inUse() && slot.generation == id.generation ? &slot : nullptr;
+  }
+
+  // Frees a force or constraint slot found by handle; a null one (stale or
+  // invalid handle) is recorded instead.
+  template <typename Slot>
+  bool removeSlot(Slot* slot) {
+    if (slot == nullptr) {
+      mError |= WorldError::kStaleHandle;
+      return false;
+    }
+    freeSlot(*slot);
+    return true;
   }
 
   // isLive, and records a stale or invalid handle.
@@ -696,8 +694,8 @@ class World
     return nullptr;
   }
 
-  // Empties a force or constraint slot; its generation moves on, so the
-  // handles to it become stale.
+  // Empties a particle, force or constraint slot; its generation moves on,
+  // so the handles to it become stale.
   template <class Slot>
   static void freeSlot(Slot& slot) {
     const uint8_t generation = uint8_t(slot.generation + 1);
