@@ -55,6 +55,18 @@ test(everySmallArgumentIsCorrectlyRounded) {
   assertEqual(failures, (uint32_t) 0);
 }
 
+// Inputs the AVR code once got wrong (a carry lost in the estimate of the
+// second root byte when the first remainder reached 256): 66561 and 66562
+// gave 65796 instead of 66047, 266247 was 502 steps low.
+test(onceWrongOnTheNano) {
+  assertEqual(sqrt(T::fromRaw(66561)).raw(), (Raw) 66047);
+  assertEqual(sqrt(T::fromRaw(66562)).raw(), (Raw) 66047);
+  assertEqual(sqrt(T::fromRaw(266247)).raw(), (Raw) 132094);
+  assertTrue(rootIsRight(66561));
+  assertTrue(rootIsRight(66562));
+  assertTrue(rootIsRight(266247));
+}
+
 test(argumentsAroundPowersOfTwoAndTheTop) {
   uint32_t failures = 0;
   for (uint8_t s = 1; s < 31; ++s) {

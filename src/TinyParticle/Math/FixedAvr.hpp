@@ -704,14 +704,18 @@ __attribute__((naked, noinline)) inline int32_t avrSquareRoot(int32_t,
       "    mul  r20, r25\n"
       "    add  r27, r0\n"
       "    adc  r30, r1\n"
+      // Bit 16 of Xh (R1 >= 256, only when a is small) adds v * 2^16. The
+      // sum r26:r30:r27 needs its third byte here already: for a = 128,
+      // v = 65535 and this add carries whenever x1 >= 2.
+      "    mov  r26, r21\n"
       "    sbrs r21, 0\n"
       "    rjmp 6f\n"
       "    add  r27, r24\n"
       "    adc  r30, r25\n"
+      "    adc  r26, r31\n"
       "6:\n"
       "    add  r27, r23\n"               // + Xh, then >> 8: r26:r30
       "    adc  r30, r20\n"
-      "    mov  r26, r21\n"
       "    adc  r26, r31\n"
       "    sbrs r19, 7\n"
       "    rjmp 7f\n"
