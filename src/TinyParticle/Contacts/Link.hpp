@@ -56,6 +56,11 @@ template <typename S, uint8_t Dim>
 struct LinkParams {
   Vec<S, Dim> anchor;  // anchored links only (b == kAnchorIndex)
   S length;            // rod length, or the cable's maximum length, m
+  // Rods only (Contacts/RodSolver.hpp):
+  S inverseLength;        // 1 / length
+  Vec<S, Dim> direction;  // unit, from b to a, at the end of the last step
+  uint8_t next;           // the next rod of its chain, or kNoIndex
+  uint8_t prev;           // the rod before it, or kNoIndex
 };
 
 template <class W, bool kAnchored, bool kRod>

@@ -25,6 +25,7 @@ enum ProfileSection : uint8_t {
   kProfileContacts,
   kProfileResolve,
   kProfileRender,
+  kProfileRods,
   kProfileSections
 };
 

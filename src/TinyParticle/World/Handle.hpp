@@ -48,6 +48,7 @@ enum : uint8_t {
   kContactsDropped = 8,  // the contact pool overflowed during a step
   kStaleHandle = 16,     // a stale or invalid handle was passed in
   kBadArgument = 32,     // e.g. a zero plane normal or a negative mass
+  kRodsUnsatisfied = 64, // rods that cannot all keep their lengths (a loop)
 };
 }
 

@@ -32,6 +32,7 @@
 #include "../Contacts/Link.hpp"
 #include "../Contacts/Plane.hpp"
 #include "../Contacts/Resolver.hpp"
+#include "../Contacts/RodSolver.hpp"
 #include "../Debug/Debug.hpp"
 #include "../Debug/Profile.hpp"
 #include "../Math/Scaler.hpp"
@@ -40,6 +41,7 @@
 #include "Handle.hpp"
 #include "Margins.hpp"
 #include "Particle.hpp"
+#include "RodState.hpp"
 #include "Slots.hpp"
 #include "UniformAcceleration.hpp"
 
@@ -60,7 +62,11 @@ class World
           kConstraints>,
       private detail::Pool<Contact<S, Dim>, kContacts>,
       private detail::UniformAcceleration<Vec<S, Dim>, (kForces > 0)>,
-      private detail::StepScaler<Scaler<S>, (kConstraints > 0)> {
+      private detail::StepScaler<Scaler<S>, (kConstraints > 0)>,
+      private detail::RodState<
+          void (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
+                   const Scaler<S>&, S),
+          (kConstraints > 0)> {
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
                     kConstraints < kAnchorIndex && kContacts < kAnchorIndex,
@@ -73,6 +79,7 @@ class World
   typedef Contact<S, Dim> ContactType;
   typedef tinyparticle::ForceSlot<S, Dim, World> ForceSlot;
   typedef tinyparticle::ConstraintSlot<S, Dim, World> ConstraintSlot;
+  typedef LinkParams<S, Dim> LinkParamsType;
 
   static const uint8_t kDimensions = Dim;
   static const uint8_t kParticleCapacity = kParticles;
@@ -87,10 +94,15 @@ class World
   typedef detail::Pool<ContactType, kContacts> ContactPool;
   typedef detail::UniformAcceleration<Vec, (kForces > 0)> UniformStore;
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
+  typedef void (*RodSolve)(World&, const Scaler<S>&, S);
+  typedef detail::RodState<RodSolve, (kConstraints > 0)> RodStore;
 
  public:
   constexpr World()
-      : mContactCount(0), mError(0), mIterationCap(0), mStats() {}
+      : mContactCount(0),
+        mError(0),
+        mIterationCap(0),
+        mStats() {}
 
   // The standard gravity of every scene: 9.81 m/s^2 along -y.
   static Vec standardGravity() {
@@ -161,6 +173,7 @@ class World
       }
     }
     freeSlot(particleAt(id.index));
+    RodStore::addRodBits(kRodsChanged);
     return true;
   }
 
@@ -313,14 +326,14 @@ class World
   // Each returns an invalid id and sets an error bit when the pool is full
   // (kConstraintsFull) or a particle id is stale (kStaleHandle).
 
-  // A rod: the two particles stay `length` (m) apart.
+  // A rod: the two particles stay `length` (m, > 0) apart. Rods are solved
+  // together, exactly, by Contacts/RodSolver.hpp; they take no contacts.
   ConstraintId addRod(ParticleId a, ParticleId b, S length) {
-    return addLink(a, b, length, S(),
-                   &LinkConstraint<World, false, true>::generate);
+    return rodAdded(addLink(a, b, length, S(), &RodSolver<World>::generate));
   }
   ConstraintId addRod(ParticleId a, const Vec& anchor, S length) {
-    return addAnchoredLink(a, anchor, length, S(),
-                           &LinkConstraint<World, true, true>::generate);
+    return rodAdded(addAnchoredLink(a, anchor, length, S(),
+                                    &RodSolver<World>::generate));
   }
   // A cable: at most `length` (m) apart; it bounces with `restitution`.
   ConstraintId addCable(ParticleId a, ParticleId b, S length, S restitution) {
@@ -340,7 +353,12 @@ class World
       mError |= WorldError::kStaleHandle;
       return false;
     }
+    if (!(length > S())) {
+      mError |= WorldError::kBadArgument;
+      return false;
+    }
     c->params.link.length = length;
+    c->params.link.inverseLength = S(1) / length;
     return true;
   }
 
@@ -396,6 +414,7 @@ class World
   }
 
   bool removeConstraint(ConstraintId id) {
+    RodStore::addRodBits(kRodsChanged);
     return removeSlot(constraint(id));
   }
 
@@ -422,6 +441,12 @@ class World
     StepScalerStore::setStepScaler(&byDt);
     integrate(byDt);
     if (kConstraints != 0) {
+      const RodSolve solveRods = RodStore::rodSolver();
+      if (solveRods != nullptr) {
+        TINYPARTICLE_PROFILE_BEGIN(kProfileRods);
+        solveRods(*this, byDt, dt);
+        TINYPARTICLE_PROFILE_END(kProfileRods);
+      }
       TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
       mContactCount = 0;
       mStats.dropped = 0;
@@ -459,6 +484,7 @@ class World
   // WorldError bits, sticky until clearError().
   uint8_t error() const { return mError; }
   void clearError() { mError = 0; }
+  void raiseError(uint8_t bits) { mError |= bits; }
 
   // ---- For generators, the renderer and tests ----------------------------
   // Slot access by index, without checks: index < capacity.
@@ -513,6 +539,17 @@ class World
   S restitutionOf(uint8_t constraintIndex) const {
     return constraintAt(constraintIndex).restitution;
   }
+
+  // For the rod solver: whether a constraint slot holds a rod, and the
+  // solver's state (kRodsChanged: rods were added or removed since the
+  // chains were found; kRodsCoupled: chains meet, so passes repeat).
+  static const uint8_t kRodsChanged = 1;
+  static const uint8_t kRodsCoupled = 2;
+  bool isRod(const ConstraintSlot& c) const {
+    return c.generate == &RodSolver<World>::generate;
+  }
+  uint8_t rodState() const { return RodStore::rodBits(); }
+  void setRodState(uint8_t state) { RodStore::setRodBits(state); }
 
   // True if that constraint is the particle collisions (contacts between two
   // particles from a generator that acts on all of them).
@@ -781,6 +818,28 @@ class World
         S(double(density.toFloat()) * double(volume.toFloat()) * 9.81);
     f->params.buoyancy = params;
     f->apply = &BuoyancyForce<World>::apply;
+    return id;
+  }
+
+  // A rod just added (or an invalid id): its length's inverse and its
+  // first direction, and the solver's turn on.
+  ConstraintId rodAdded(ConstraintId id) {
+    ConstraintSlot* c = constraint(id);
+    if (c == nullptr) return id;
+    LinkParams<S, Dim>& link = c->params.link;
+    if (!(link.length > S())) {
+      freeSlot(*c);
+      mError |= WorldError::kBadArgument;
+      return ConstraintId();
+    }
+    link.inverseLength = S(1) / link.length;
+    Vec d = particleAt(c->a).position;
+    d -= c->b == kAnchorIndex ? link.anchor : particleAt(c->b).position;
+    d.normalize();  // stays zero if the ends coincide
+    link.direction = d;
+    link.next = link.prev = kNoIndex;
+    RodStore::addRodBits(kRodsChanged);
+    RodStore::setRodSolver(&RodSolver<World>::solve);
     return id;
   }
 

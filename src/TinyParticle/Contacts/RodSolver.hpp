@@ -1,0 +1,368 @@
+// The rod solver: every rod of a world, solved exactly each step.
+//
+// Rods are not contacts. A resolver that takes one contact at a time suits
+// loose contacts, but rods that share particles (a chain, a rope, a double
+// pendulum) undo each other's corrections, and a chain of eight stretched
+// by a fifth while it lost all its energy. Here all rods are solved
+// together, in two linear solves per step (the scheme of SHAKE and RATTLE,
+// Andersen 1983, written in velocities):
+//
+//  1. Positions (SHAKE). After the integrator's step, rod i between a and
+//     b gets an impulse mu_i along its direction u_i at the start of the
+//     step (kept from the last step), chosen so that the new positions
+//     x + dt v keep the rod's length. The particles' velocities change by
+//     w mu u (w the inverse mass) and their positions by dt times that.
+//     For rod i, with d the vector from b to a after the integrator, w_r
+//     the relative velocity and a = d.u:
+//       sum_j C_ij mu_j = (L - a) / dt - (dt / 2) |w_r across u|^2 / L
+//     (to second order: the rod's new length is a plus the correction,
+//     less what its turn across u takes, |d across u|^2 / 2L). Everything
+//     here is a velocity, so fixed point keeps its precision even where the
+//     correction of a position is a fraction of a unit (Q16.16 at 1 kHz).
+//  2. Velocities (RATTLE). The directions at the end of the step, u'_i,
+//     and impulses along them that remove every rod's stretching speed:
+//       sum_j C'_ij nu_j = -w_r . u'_i.
+// The matrix C_ij is (w_a + w_b) on the diagonal and +-w_p (u_i . u_j)
+// where rods i and j share a movable particle p. Along a chain it is
+// tridiagonal: one elimination down the chain and one back solves it
+// exactly, in time linear in its length (the Thomas algorithm; Baraff 1996
+// makes the same point for any tree of constraints).
+//
+// Why it keeps the energy: for a particle turning at speed s around a
+// fixed point, step 1 moves it along the chord of the circle and step 2
+// keeps the chord velocity's component along the new tangent, which is s
+// again exactly. What remains is the integrator's own bounded error of the
+// forces, at any step rate.
+//
+// Topology: the rods are split into chains, each rod linked to the next
+// one through a particle that belongs to these two rods only. A world
+// whose rods form only chains (ropes, pendulums, levers) is solved in one
+// pass. Where three or more rods meet at a particle, or rods close a loop,
+// the chains are coupled through those particles: the pass repeats (block
+// Gauss-Seidel) until the rods hold to within kTolerance, at most
+// kMaxPasses times; rods that still do not hold (a loop whose lengths
+// cannot all be met) raise WorldError::kRodsUnsatisfied and stay as close
+// as the passes got them. The chains are found again only when rods are
+// added or removed.
+//
+// Cost per rod and step, Q16.16 on AVR: about 25 multiplies and two
+// divisions (one per solve), no square root while the rod keeps its length
+// (the new direction is normalised by one Newton step from 1 / L).
+#pragma once
+
+#include <stdint.h>
+
+#include "../Math/Scaler.hpp"
+#include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
+#include "../World/Handle.hpp"
+
+namespace tinyparticle {
+
+template <class W>
+struct RodSolver {
+  typedef typename W::Scalar S;
+  typedef typename W::Vec V;
+  typedef typename W::ParticleType P;
+  typedef typename W::ConstraintSlot Slot;
+
+  static const uint8_t kMaxPasses = 8;
+
+  // A rod's slot makes no contacts: this marks it (World::isRod()).
+  static void generate(W&, Slot&, uint8_t) {}
+
+  // The step's two solves (World::step calls them after integrating).
+  static void solve(W& world, const Scaler<S>& byDt, S dt) {
+    if (world.rodState() & W::kRodsChanged) findChains(world);
+    const bool coupled = (world.rodState() & W::kRodsCoupled) != 0;
+    Pass pass(byDt, S(1) / dt);
+    Row rows[W::kConstraintCapacity > 0 ? W::kConstraintCapacity : 1];
+    // The position solve is exact to second order in each rod's turn: a
+    // rod that turned by more than 1/16 rad in the step, or coupled chains,
+    // take further passes (Newton's iterations) until every rod is within
+    // kTolerance of its length.
+    pass.positions = true;
+    uint8_t n = 0;
+    for (;;) {
+      pass.worst = S();
+      pass.turned = false;
+      sweep(world, rows, pass);
+      if (++n == kMaxPasses) break;
+      if (!coupled && !pass.turned) break;
+      if (n > 1 && pass.worst < tolerance()) break;
+    }
+    // Rounding leaves a few units of a fixed-point scalar; a rod off by a
+    // millimetre after all the passes is one that cannot be held.
+    if (n == kMaxPasses && pass.worst > S(1.0 / 1024)) {
+      world.raiseError(WorldError::kRodsUnsatisfied);
+    }
+    newDirections(world);
+    pass.positions = false;
+    for (n = 0; n < kMaxPasses; ++n) {
+      sweep(world, rows, pass);
+      if (!coupled) break;
+    }
+  }
+
+  // Within this of their length (m) the rods count as held: 61 um, or
+  // four units of a coarse scalar.
+  static S tolerance() {
+    return fmax(S(1.0 / 16384), S::epsilon() * S(4));
+  }
+
+ private:
+  struct Row {
+    S multiplier;  // the elimination's factor for this row
+    S y;           // the row's right side, eliminated and divided
+  };
+
+  struct Pass {
+    Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
+        turned(false), worst() {}
+    const Scaler<S>& byDt;
+    S invDt;
+    bool positions;  // the position solve (SHAKE), or the velocities
+    bool turned;     // a rod turned by more than 1/16 rad
+    S worst;         // the largest correction of a length, m
+  };
+
+  static bool isRodAt(W& world, uint8_t i) {
+    return world.isRod(world.constraintAt(i));
+  }
+
+  // The inverse mass of an end (0 for an anchor or a fixed particle).
+  static S inverseMassOf(W& world, uint8_t p) {
+    if (p >= W::kParticleCapacity) return S();
+    const P& particle = world.particleAt(p);
+    return particle.isStatic() ? S() : particle.inverseMass;
+  }
+
+  // The sign of rod slot's impulse on particle p: +1 at a, -1 at b.
+  static bool pushesA(const Slot& s, uint8_t p) { return s.a == p; }
+
+  // ---- Topology ---------------------------------------------------------
+
+  // How many rods end at particle p (anchors are not particles).
+  static uint8_t degree(W& world, uint8_t p) {
+    if (p >= W::kParticleCapacity) return 0;
+    uint8_t n = 0;
+    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+      if (!isRodAt(world, i)) continue;
+      const Slot& s = world.constraintAt(i);
+      if (s.a == p) ++n;
+      if (s.b == p) ++n;
+    }
+    return n;
+  }
+
+  // The other rod at particle p (of degree 2), or kNoIndex.
+  static uint8_t otherRod(W& world, uint8_t rod, uint8_t p) {
+    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+      if (i == rod || !isRodAt(world, i)) continue;
+      const Slot& s = world.constraintAt(i);
+      if (s.a == p || s.b == p) return i;
+    }
+    return kNoIndex;
+  }
+
+  // Splits the rods into chains (next / prev in each rod's parameters).
+  // Chains start at a rod with an end that no other rod shares, so that
+  // a chain is as long as it can be; rods left over lie on loops.
+  static void findChains(W& world) {
+    bool coupled = false;
+    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+      if (!isRodAt(world, i)) continue;
+      LinkParamsOf(world, i).next = kNoIndex;
+      LinkParamsOf(world, i).prev = kAllIndex;  // not placed yet
+      const Slot& s = world.constraintAt(i);
+      if (degree(world, s.a) > 2 || degree(world, s.b) > 2) coupled = true;
+    }
+    for (uint8_t round = 0; round < 2; ++round) {
+      for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+        if (!isRodAt(world, i) || LinkParamsOf(world, i).prev != kAllIndex) {
+          continue;
+        }
+        const Slot& s = world.constraintAt(i);
+        // Enter at an end through which the chain cannot continue.
+        uint8_t from;
+        if (degree(world, s.a) != 2) {
+          from = s.a;
+        } else if (degree(world, s.b) != 2) {
+          from = s.b;
+        } else if (round == 1) {
+          from = s.a;  // a loop: start anywhere
+          coupled = true;
+        } else {
+          continue;
+        }
+        uint8_t rod = i;
+        uint8_t prev = kNoIndex;
+        for (;;) {
+          LinkParamsOf(world, rod).prev = prev;
+          if (prev != kNoIndex) LinkParamsOf(world, prev).next = rod;
+          const Slot& r = world.constraintAt(rod);
+          const uint8_t far = r.a == from ? r.b : r.a;
+          if (degree(world, far) != 2) break;
+          const uint8_t next = otherRod(world, rod, far);
+          if (next == kNoIndex || LinkParamsOf(world, next).prev != kAllIndex) {
+            break;  // back at the start of a loop
+          }
+          prev = rod;
+          rod = next;
+          from = far;
+        }
+      }
+    }
+    world.setRodState(coupled ? W::kRodsCoupled : 0);
+  }
+
+  static typename W::LinkParamsType& LinkParamsOf(W& world, uint8_t i) {
+    return world.constraintAt(i).params.link;
+  }
+
+  // ---- The solves ---------------------------------------------------------
+
+  // The vector from b to a.
+  static V span(W& world, const Slot& s) {
+    V d = world.particleAt(s.a).position;
+    if (s.b == kAnchorIndex) {
+      d -= s.params.link.anchor;
+    } else {
+      d -= world.particleAt(s.b).position;
+    }
+    return d;
+  }
+
+  // va - vb (b at rest when it is an anchor or fixed).
+  static V relativeVelocity(W& world, const Slot& s) {
+    V w = world.particleAt(s.a).velocity;
+    if (s.b != kAnchorIndex && !world.particleAt(s.b).isStatic()) {
+      w -= world.particleAt(s.b).velocity;
+    }
+    return w;
+  }
+
+  // Every rod's direction at the end of the step. The rod's length is
+  // close to L, so d / L is nearly a unit vector, and one Newton step
+  // (1.5 - |d / L|^2 / 2) makes it one to about 1e-7; a rod far off its
+  // length (just added, or moved by the sketch) is normalised in full.
+  static void newDirections(W& world) {
+    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+      if (!isRodAt(world, i)) continue;
+      Slot& s = world.constraintAt(i);
+      V d = span(world, s);
+      V scaled = d * s.params.link.inverseLength;
+      const S q = scaled.magnitudeSquared();
+      const S off = q - S(1);
+      if (fabs(off) < S(1.0 / 256)) {
+        s.params.link.direction = scaled * (S(1.5) - detail::half(q));
+      } else if (d.normalize()) {
+        s.params.link.direction = d;
+      }  // else the ends coincide: keep the old direction
+    }
+  }
+
+  // The right side of rod s's row: for positions (SHAKE) or velocities.
+  static S rightSide(W& world, const Slot& s, Pass& pass) {
+    const V& u = s.params.link.direction;
+    if (!pass.positions) return -dot(relativeVelocity(world, s), u);
+    // d = a u + p: the rod's length is a + p^2 / 2L to second order. That
+    // drop is below a unit of Q16.16 at 1 kHz, so it is kept as a speed,
+    // p^2 / 2L dt = (p / dt)^2 dt / 2L.
+    const V d = span(world, s);
+    const S along = dot(d, u);
+    V q = d;
+    q.addScaled(u, -along);
+    q *= pass.invDt;
+    const S invL = s.params.link.inverseLength;
+    const S drop = detail::half(pass.byDt(q.magnitudeSquared())) * invL;
+    const S right = (s.params.link.length - along) * pass.invDt - drop;
+    const S correction = pass.byDt(fabs(right));
+    if (correction > pass.worst) pass.worst = correction;
+    if (pass.byDt(drop) * invL > S(1.0 / 512)) pass.turned = true;
+    return right;
+  }
+
+  // Applies rod s's impulse mu (per unit mass along u): velocities, and
+  // for the position solve the positions by dt times the change.
+  static void apply(W& world, const Slot& s, S mu, const Pass& pass) {
+    if (detail::isZero(mu)) return;
+    const V& u = s.params.link.direction;
+    P& a = world.particleAt(s.a);
+    if (!a.isStatic()) push(a, u * (a.inverseMass * mu), pass);
+    if (s.b != kAnchorIndex) {
+      P& b = world.particleAt(s.b);
+      if (!b.isStatic()) push(b, u * -(b.inverseMass * mu), pass);
+    }
+  }
+  static void push(P& p, const V& dv, const Pass& pass) {
+    p.velocity += dv;
+    if (pass.positions) {
+      for (uint8_t k = 0; k < W::kDimensions; ++k) {
+        p.position[k] += pass.byDt(dv[k]);
+      }
+    }
+  }
+
+  // The coupling C_ij of rod r with the rod before it in its chain.
+  static S coupling(W& world, const Slot& r, const Slot& prev) {
+    S c = S();
+    const S cosine = dot(r.params.link.direction, prev.params.link.direction);
+    const uint8_t ends[2] = {r.a, r.b};
+    for (uint8_t k = 0; k < 2; ++k) {
+      const uint8_t p = ends[k];
+      if (p >= W::kParticleCapacity || (prev.a != p && prev.b != p)) continue;
+      const S w = inverseMassOf(world, p);
+      // + when p is the same end (a or b) of both rods, - otherwise.
+      c += pushesA(r, p) == pushesA(prev, p) ? w : -w;
+    }
+    return detail::isZero(c) ? c : c * cosine;
+  }
+
+  // One pass over all chains.
+  static void sweep(W& world, Row* rows, Pass& pass) {
+    for (uint8_t head = 0; head < W::kConstraintCapacity; ++head) {
+      if (!isRodAt(world, head) ||
+          world.constraintAt(head).params.link.prev != kNoIndex) {
+        continue;
+      }
+      // Down the chain: eliminate the coupling with the rod before.
+      uint8_t last = head;
+      S previousInversePivot = S(), previousRight = S();
+      for (uint8_t i = head; i != kNoIndex;
+           i = world.constraintAt(i).params.link.next) {
+        const Slot& s = world.constraintAt(i);
+        S right = rightSide(world, s, pass);
+        S pivot = inverseMassOf(world, s.a) + inverseMassOf(world, s.b);
+        S multiplier = S();
+        if (i != head) {
+          const S c = coupling(world, s, world.constraintAt(s.params.link.prev));
+          if (!detail::isZero(c)) {
+            multiplier = c * previousInversePivot;
+            pivot -= multiplier * c;
+            right -= multiplier * previousRight;
+          }
+        }
+        // Both ends immovable: no impulse.
+        const S inversePivot =
+            detail::isPositive(pivot) ? S(1) / pivot : S();
+        rows[i].multiplier = multiplier;
+        rows[i].y = right * inversePivot;
+        previousInversePivot = inversePivot;
+        previousRight = right;
+        last = i;
+      }
+      // Back up the chain: mu_i = y_i - m_(i+1) mu_(i+1), applied at once.
+      S mu = S();
+      S nextMultiplier = S();
+      for (uint8_t i = last; i != kNoIndex;
+           i = world.constraintAt(i).params.link.prev) {
+        mu = rows[i].y - nextMultiplier * mu;
+        nextMultiplier = rows[i].multiplier;
+        apply(world, world.constraintAt(i), mu, pass);
+      }
+    }
+  }
+};
+
+}  // namespace tinyparticle

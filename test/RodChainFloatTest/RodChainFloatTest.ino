@@ -1,0 +1,37 @@
+// Rigid links in Float (Contacts/RodSolver.hpp): the chain of eight keeps
+// its links within 0.5 % and its energy within 0.05 E_fall over 10 s at
+// 256 steps a second, and (on the host: float is slow on the Nano) the
+// double pendulum at 1024 (bounds of issue 9).
+#include <AUnit.h>
+#include <TinyParticle.h>
+#include <TinyParticle/Testing/ChainChecks.hpp>
+
+using aunit::TestRunner;
+using tinyparticle::testing::ChainChecks;
+using tinyparticle::testing::ChainResult;
+
+test(chainOfEightAt256Hz) {
+  const ChainResult r = ChainChecks<Float>::run(8, 256, 2560);
+  assertLess(r.linkError, 0.005f);
+  assertLess(r.energyError, 0.05f);
+  assertEqual(r.error, (uint8_t) 0);
+}
+
+#if defined(EPOXY_DUINO)
+test(doublePendulumAt1024Hz) {
+  const ChainResult r = ChainChecks<Float>::run(2, 1024, 10240);
+  assertLess(r.linkError, 0.005f);
+  assertLess(r.energyError, 0.05f);
+}
+#endif
+
+void setup() {
+#if !defined(EPOXY_DUINO)
+  delay(1000);
+#endif
+  Serial.begin(115200);
+  while (!Serial);
+  TestRunner::setTimeout(0);
+}
+
+void loop() { TestRunner::run(); }

@@ -1,0 +1,46 @@
+// Rigid links in Q16.16 (Contacts/RodSolver.hpp): chains keep their links
+// and their energy at 256 and 1024 steps a second. Bounds (issue 9): link
+// error <= 0.5 %, energy error <= 0.05 E_fall over 10 s. (RodCasesTest has
+// the lever, loops, removal, mass ratio and a rod with a plane.)
+#include <AUnit.h>
+#include <TinyParticle.h>
+#include <TinyParticle/Testing/ChainChecks.hpp>
+
+using aunit::TestRunner;
+using tinyparticle::testing::ChainChecks;
+using tinyparticle::testing::ChainResult;
+
+typedef Q16_16 S;
+
+test(chainOfEightAt256Hz) {
+  const ChainResult r = ChainChecks<S>::run(8, 256, 2560);
+  assertLess(r.linkError, 0.005f);
+  assertLess(r.energyError, 0.05f);
+  assertEqual(r.error, (uint8_t) 0);
+}
+
+test(doublePendulumAt1024Hz) {
+  const ChainResult r = ChainChecks<S>::run(2, 1024, 10240);
+  assertLess(r.linkError, 0.005f);
+  assertLess(r.energyError, 0.05f);
+  assertEqual(r.error, (uint8_t) 0);
+}
+
+#if defined(EPOXY_DUINO)
+test(chainOfEightAt1024Hz) {
+  const ChainResult r = ChainChecks<S>::run(8, 1024, 10240);
+  assertLess(r.linkError, 0.005f);
+  assertLess(r.energyError, 0.05f);
+}
+#endif
+
+void setup() {
+#if !defined(EPOXY_DUINO)
+  delay(1000);
+#endif
+  Serial.begin(115200);
+  while (!Serial);
+  TestRunner::setTimeout(0);
+}
+
+void loop() { TestRunner::run(); }
