@@ -220,6 +220,20 @@ def falls(sim, elf, jobs):
 
     with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
         results = list(pool.map(one, jobs_list))
+    # The sensor curve's error: the push the firmware computes against the
+    # net force on the pads, averaged over each run's last second.
+    for L in LENGTHS:
+        parts = []
+        for (L2, frac), name, dev, ref in results:
+            if L2 != L or frac == 0:
+                continue
+            tr = dev["trace"]
+            sel = [i for i, tt in enumerate(tr["t"]) if tt >= tr["t"][-1] - 1]
+            fw = sum(tr["fw_push_N"][i] for i in sel) / len(sel)
+            net = sum(tr["fsr_down_N"][i] - tr["fsr_up_N"][i] for i in sel) / len(sel)
+            parts.append("%d %%: %.2f N for %.2f N (%s)" % (round(frac * 100), fw, net, fmt_pct(rel(fw, net))))
+        row("2 partial support: the firmware's push against the pads' net force", "L = %.2f m" % L,
+            "; ".join(parts) + " (last second of each run)", "reported", None)
     for (L, frac), name, dev, ref in results:
         tr = dev["trace"]
         t0 = dev["first_loop_s"]
@@ -366,6 +380,33 @@ def grips(sim, elf, jobs):
     return [r[2] for r in results]
 
 
+def freeze_scan(sim, elf, jobs):
+    """Where the partial-support fall stops: the smallest push (fraction of
+    the weight's torque) with which the lever no longer reaches the stop."""
+    out = []
+    for L in LENGTHS:
+        fracs = [0.5 + 0.02 * i for i in range(14)]
+
+        def one(frac):
+            name = "freeze%03d_L%02d" % (round(frac * 100), round(L * 100))
+            dev = run_device(sim, elf, name, L, 2.5, "force", "0:%.5f" % (frac * balance_force(L)))
+            tr = dev["trace"]
+            d = crossing(tr["t"], tr["servo_deg"], -1, True)
+            a = crossing(tr["t"], tr["servo_deg"], -RANGE + 1, True)
+            return frac, (a - d if a is not None and d is not None else None)
+
+        with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+            res = list(pool.map(one, fracs))
+        frozen = [f for f, fall in res if fall is None]
+        reached = ", ".join("%d %%: %s" % (round(f * 100), fmt_s(fall)) for f, fall in res)
+        row("2 partial support: where the fall stops", "L = %.2f m" % L,
+            ("does not reach the stop in 2.5 s from %d %% of the weight's torque" % round(min(frozen) * 100)
+             if frozen else "reaches the stop up to 76 %") + " (fall times: %s)" % reached,
+            "reported", None)
+        out += res
+    return out
+
+
 VARIATIONS = [("baseline", ()),
               ("lever inertia x0.5", ("lever_inertia=1e-4",)),
               ("lever inertia x2", ("lever_inertia=4e-4",)),
@@ -420,17 +461,23 @@ def loop_rows(devs):
             sum(d["mean_pass_cycles"] for d in devs) / len(devs)),
         "<= 13,500 cycles", worst["worst_pass_cycles"] <= 13500)
     # Passes that ran a physics step, over every run's pass log.
-    stepping, drawing = [], []
+    stepping, quiet = [], []
     for d in devs:
         with open(d["passes_csv"]) as f:
             for r in csv.DictReader(f):
-                (stepping if r["steps"] != "0" else drawing).append(int(r["cycles"]))
+                if r["steps"] != "0":
+                    stepping.append(int(r["cycles"]))
+                    if r["serial_bytes"] == "0":
+                        quiet.append(int(r["cycles"]))
     stepping.sort()
+    quiet.sort()
     conv = sum(d["adc_conversions"] for d in devs) / max(1, sum(d["steps"] for d in devs))
     row("5 loop: passes with a step", "all runs",
-        "median %d, 90th percentile %d cycles; %.2f blocking analogRead() conversions per step, "
-        "each 13 ADC clocks x 128 = 1,664 cycles (datasheet): about %d cycles of sensing" % (
-            stepping[len(stepping) // 2], stepping[len(stepping) * 9 // 10], conv, round(conv * 1664)),
+        "median %d, 90th percentile %d cycles; without Serial output: median %d, worst %d; "
+        "%.2f blocking analogRead() conversions per step, each 13 ADC clocks x 128 = 1,664 "
+        "cycles (datasheet): about %d cycles of sensing" % (
+            stepping[len(stepping) // 2], stepping[len(stepping) * 9 // 10],
+            quiet[len(quiet) // 2], quiet[-1], conv, round(conv * 1664)),
         "reported", None)
     row("5 loop: interrupt load", "all runs",
         "%.1f %% of the time in interrupts" % (100 * max(d["isr_fraction"] for d in devs)),
@@ -645,6 +692,7 @@ def main():
             print("hil quick: %d failed (%.1f s)" % (failed, time.time() - start))
             return 1 if failed else 0
         devs = falls(args.sim, elf, args.jobs)
+        freeze_scan(args.sim, elf, args.jobs)
         devs += push_release(args.sim, elf, args.jobs)
         devs += grips(args.sim, elf, args.jobs)
         loop_rows(devs)

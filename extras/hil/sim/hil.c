@@ -76,6 +76,8 @@ typedef struct {
   uint32_t last_steps;
   long passes, pass_edges;
   uint64_t worst_pass, worst_pass_isr, worst_no_isr, pass_sum;
+  uint64_t worst_quiet;  // worst pass that queued nothing for Serial
+  uint8_t last_tx_head;
   long worst_pass_steps;
   long max_steps_per_pass, passes_no_step;
   uint64_t first_edge;
@@ -163,9 +165,15 @@ static void on_profile_pin(avr_irq_t* irq, uint32_t value, void* param) {
     if (cycles - isr > sim.worst_no_isr) sim.worst_no_isr = cycles - isr;
     if (due > sim.max_steps_per_pass) sim.max_steps_per_pass = due;
     if (due == 0) sim.passes_no_step++;
+    // Bytes the pass queued for Serial (its transmit head moved on).
+    const uint8_t head =
+        sim.serial_ok ? sim.avr->data[sim.a_serial + SERIAL_TX_HEAD] : 0;
+    const int queued = (head - sim.last_tx_head) & 63;
+    sim.last_tx_head = head;
+    if (queued == 0 && cycles > sim.worst_quiet) sim.worst_quiet = cycles;
     if (sim.passes_csv) {
-      fprintf(sim.passes_csv, "%.6f,%llu,%llu,%ld\n", now / F_CPU_HZ,
-              (unsigned long long)cycles, (unsigned long long)isr, due);
+      fprintf(sim.passes_csv, "%.6f,%llu,%llu,%ld,%d\n", now / F_CPU_HZ,
+              (unsigned long long)cycles, (unsigned long long)isr, due, queued);
     }
   } else {
     sim.first_edge = now;
@@ -175,6 +183,7 @@ static void on_profile_pin(avr_irq_t* irq, uint32_t value, void* param) {
       const uint8_t* d = sim.avr->data + sim.a_serial;
       sim.serial_ok = (d[SERIAL_UCSRA_PTR] | d[SERIAL_UCSRA_PTR + 1] << 8) == 0xC0 &&
                       (d[SERIAL_UDR_PTR] | d[SERIAL_UDR_PTR + 1] << 8) == 0xC6;
+      sim.last_tx_head = d[SERIAL_TX_HEAD];
     }
   }
   sim.pass_edges++;
@@ -413,7 +422,7 @@ static int cmd_run(int argc, char** argv) {
             "t,servo_deg,lever_deg,target_deg,pulse_us,virtual_deg,"
             "virtual_rate_deg_s,hand_N,fsr_down_N,fsr_up_N,adc_down,adc_up,"
             "fw_push_N,stalled\n");
-  if (sim.passes_csv) fprintf(sim.passes_csv, "t,cycles,isr_cycles,steps\n");
+  if (sim.passes_csv) fprintf(sim.passes_csv, "t,cycles,isr_cycles,steps,serial_bytes\n");
 
   const uint64_t end = (uint64_t)(sim.seconds * F_CPU_HZ);
   int state = cpu_Running;
@@ -461,6 +470,8 @@ static int cmd_run(int argc, char** argv) {
   printf("result worst_pass_isr_cycles=%llu\n",
          (unsigned long long)sim.worst_pass_isr);
   printf("result worst_pass_steps=%ld\n", sim.worst_pass_steps);
+  printf("result worst_quiet_pass_cycles=%llu\n",
+         (unsigned long long)sim.worst_quiet);
   printf("result worst_pass_without_isr_cycles=%llu\n",
          (unsigned long long)sim.worst_no_isr);
   printf("result mean_pass_cycles=%.1f\n",
