@@ -150,8 +150,9 @@ static void on_profile_pin(avr_irq_t* irq, uint32_t value, void* param) {
   sim.profile_level = value != 0;
   const uint64_t now = sim.avr->cycle;
   const uint32_t steps = timing_steps();
-  uint64_t isr = sim.isr_total - sim.pass_isr_start;
-  if (sim.in_isr) isr += now - sim.isr_start;  // (never: pins change in code)
+  // Interrupt cycles since the last edge (the pin is toggled by loop(), so
+  // no handler is running now).
+  const uint64_t isr = sim.isr_total - sim.pass_isr_start;
   if (sim.pass_edges > 0) {
     const uint64_t cycles = now - sim.last_edge;
     const long due = (long)(steps - sim.last_steps);
