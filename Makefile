@@ -13,7 +13,7 @@ JOBS ?= 2
 # The demo example (DEMO=examples/Name runs another one).
 DEMO ?= examples/BouncingBalls
 
-.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick clean
+.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil clean
 
 help:
 	@sed -n '3,4p' Makefile | sed 's/^# *//'
@@ -61,6 +61,14 @@ bench:
 bench-quick:
 	@$(SCRIPTS)/setup-packages bench
 	@$(MAKE) --no-print-directory -C extras/benchmarks quick
+
+# The HapticLever device simulator (extras/hil): every scenario, the results
+# table, CSV traces and plots. Exits 0 when device goals fail (they are
+# goals), non-zero when the simulator itself breaks. Its self-checks run in
+# `make test` (kind "hil" of extras/scripts/run-tests).
+hil:
+	@$(SCRIPTS)/setup-packages hil
+	@$(MAKE) --no-print-directory -C extras/hil
 
 clean:
 	rm -rf build

@@ -48,6 +48,11 @@ const int kServoCentre = 90;        // degrees when the lever is level
 const int kServoDirection = 1;      // -1 if the servo is mounted the other way
 const int kFsrLimit = 960;          // the fitted curve has a pole near 990
 
+// For measurements only (the device simulator in extras/hil defines it):
+// a pin that changes state at every pass of loop(), so that each pass can be
+// timed from outside. Leave it undefined on a real device.
+// #define HAPTIC_PROFILE_PIN 8
+
 // ---- The simulation ------------------------------------------------------
 // The lever scene (pivot, 0.1 kg end, rod, gravity, user force) plus the two
 // range ends: 2 particles, 2 forces, 3 constraints, 3 contacts.
@@ -134,6 +139,9 @@ int leverDegrees() {
 void setup() {
   Serial.begin(115200);
   leverServo.attach(kServoPin);
+#ifdef HAPTIC_PROFILE_PIN
+  pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
+#endif
   lever = buildLever(world, &userForce, leverLength());
   addRangeEnd(-kHalfRangeDegrees, true);
   addRangeEnd(kHalfRangeDegrees, false);
@@ -143,6 +151,10 @@ void setup() {
 bool drawing = false;
 
 void loop() {
+#ifdef HAPTIC_PROFILE_PIN
+  *portOutputRegister(digitalPinToPort(HAPTIC_PROFILE_PIN)) ^=
+      digitalPinToBitMask(HAPTIC_PROFILE_PIN);
+#endif
   uint8_t due = timing.stepsDue();
   if (due > 0) readDevice();
   for (; due > 0; --due) {
