@@ -96,6 +96,7 @@ struct RodSolver {
     if (n == kMaxPasses && pass.worst > S(1.0 / 1024)) {
       world.raiseError(WorldError::kRodsUnsatisfied);
     }
+    world.movePositions(pass.byDt);
     newDirections(world);
     pass.positions = false;
     for (n = 0; n < kMaxPasses; ++n) {
@@ -262,21 +263,33 @@ struct RodSolver {
     }
   }
 
-  // The right side of rod s's row: for positions (SHAKE) or velocities.
+  // The right side of rod s's row: for the velocity solve, minus the
+  // stretching speed; for the position solve, the speed along u that
+  // brings the rod to its length at the end of the step. The positions
+  // have not moved yet (they move once, after this solve, rounded once):
+  // the rod at the end of the step is predicted as d + dt w, d from b to a
+  // now and w their relative velocity. With a = d.u, r = w.u and the part
+  // across u, p / dt = (d - a u) / dt + (w - r u), its length is
+  //   a + dt r + dt (correction) + |p|^2 / 2L
+  // to second order, so the correction is
+  //   (L - a) / dt - r - (p / dt)^2 dt / 2L.
+  // Everything is a speed: in fixed point the drop |p|^2 / 2L, a fraction
+  // of a unit at 1 kHz, keeps its precision.
   static S rightSide(W& world, const Slot& s, Pass& pass) {
     const V& u = s.params.link.direction;
-    if (!pass.positions) return -dot(relativeVelocity(world, s), u);
-    // d = a u + p: the rod's length is a + p^2 / 2L to second order. That
-    // drop is below a unit of Q16.16 at 1 kHz, so it is kept as a speed,
-    // p^2 / 2L dt = (p / dt)^2 dt / 2L.
+    const V w = relativeVelocity(world, s);
+    const S radial = dot(w, u);
+    if (!pass.positions) return -radial;
     const V d = span(world, s);
     const S along = dot(d, u);
     V q = d;
     q.addScaled(u, -along);
     q *= pass.invDt;
+    q += w;
+    q.addScaled(u, -radial);
     const S invL = s.params.link.inverseLength;
     const S drop = detail::half(pass.byDt(q.magnitudeSquared())) * invL;
-    const S right = (s.params.link.length - along) * pass.invDt - drop;
+    const S right = (s.params.link.length - along) * pass.invDt - radial - drop;
     const S correction = pass.byDt(fabs(right));
     if (correction > pass.worst) pass.worst = correction;
     if (pass.byDt(drop) * invL > S(1.0 / 512)) pass.turned = true;
@@ -295,14 +308,7 @@ struct RodSolver {
       if (!b.isStatic()) push(b, u * -(b.inverseMass * mu), pass);
     }
   }
-  static void push(P& p, const V& dv, const Pass& pass) {
-    p.velocity += dv;
-    if (pass.positions) {
-      for (uint8_t k = 0; k < W::kDimensions; ++k) {
-        p.position[k] += pass.byDt(dv[k]);
-      }
-    }
-  }
+  static void push(P& p, const V& dv, const Pass&) { p.velocity += dv; }
 
   // The coupling C_ij of rod r with the rod before it in its chain.
   static S coupling(W& world, const Slot& r, const Slot& prev) {

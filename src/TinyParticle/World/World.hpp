@@ -439,9 +439,11 @@ class World
     // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
     const Scaler<S> byDt(dt);
     StepScalerStore::setStepScaler(&byDt);
-    integrate(byDt);
+    // With rods, the positions move after the rods' velocity solve, so that
+    // each moves once, rounded once (the solver calls movePositions()).
+    const RodSolve solveRods = RodStore::rodSolver();
+    integrate(byDt, solveRods == nullptr);
     if (kConstraints != 0) {
-      const RodSolve solveRods = RodStore::rodSolver();
       if (solveRods != nullptr) {
         TINYPARTICLE_PROFILE_BEGIN(kProfileRods);
         solveRods(*this, byDt, dt);
@@ -529,6 +531,21 @@ class World
     if (kForces == 0) return detail::alongNormal(p.acceleration, direction);
     return detail::sumAlongNormal(p.acceleration, UniformStore::uniform(),
                                   direction);
+  }
+
+  // For the rod solver: x += v dt for every movable particle (the step
+  // leaves it to the solver when the world has rods).
+  void movePositions(const Scaler<S>& byDt) {
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      ParticleType& p = particleAt(i);
+      if ((p.flags & (ParticleType::kInUse | ParticleType::kStatic)) !=
+          ParticleType::kInUse) {
+        continue;
+      }
+      move(p.position.x, p.velocity.x, byDt);
+      move(p.position.y, p.velocity.y, byDt);
+      if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
+    }
   }
 
   // During a step, for contact generators: multiplies by the step's dt.
@@ -656,7 +673,7 @@ class World
     return false;
   }
 
-  void integrate(const Scaler<S>& byDt) {
+  void integrate(const Scaler<S>& byDt, bool andMove) {
     TINYPARTICLE_PROFILE_BEGIN(kProfileIntegrate);
     // The uniform acceleration's share, the same for every particle.
     Vec uniformStep;
@@ -693,6 +710,7 @@ class World
           p.velocity.addScaled(p.velocity, -loss);
         }
       }
+      if (!andMove) continue;
       move(p.position.x, p.velocity.x, byDt);
       move(p.position.y, p.velocity.y, byDt);
       if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
