@@ -76,6 +76,7 @@ struct RodSolver {
     if (world.rodState() & W::kRodsChanged) findChains(world);
     const bool coupled = (world.rodState() & W::kRodsCoupled) != 0;
     Pass pass(byDt, S(1) / dt);
+    pass.coupled = coupled;
     Row rows[W::kConstraintCapacity > 0 ? W::kConstraintCapacity : 1];
     // The position solve is exact to second order in each rod's turn: a
     // rod that turned by more than 1/16 rad in the step, or coupled chains,
@@ -87,6 +88,7 @@ struct RodSolver {
       pass.worst = S();
       pass.turned = false;
       sweep(world, rows, pass);
+      pass.first = false;
       if (++n == kMaxPasses) break;
       if (!coupled && !pass.turned) break;
       if (n > 1 && pass.worst < tolerance()) break;
@@ -95,6 +97,15 @@ struct RodSolver {
     // millimetre after all the passes is one that cannot be held.
     if (n == kMaxPasses && pass.worst > S(1.0 / 1024)) {
       world.raiseError(WorldError::kRodsUnsatisfied);
+    }
+    // The first pass's moves of the ends, unless further passes along
+    // chains took the errors into the speed (a fast rod's exact length).
+    if (n == 1 || coupled) {
+      for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+        if (isRodAt(world, i)) {
+          move(world, world.constraintAt(i), rows[i].moved, pass);
+        }
+      }
     }
     world.movePositions(pass.byDt);
     newDirections(world);
@@ -115,15 +126,19 @@ struct RodSolver {
   struct Row {
     S multiplier;  // the elimination's factor for this row
     S y;           // the row's right side, eliminated and divided
+    S yMove;       // the same for the length errors (position solve)
+    S moved;       // the first pass's position impulse, applied after all
   };
 
   struct Pass {
     Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
-        turned(false), worst() {}
+        turned(false), first(true), coupled(false), worst() {}
     const Scaler<S>& byDt;
     S invDt;
     bool positions;  // the position solve (SHAKE), or the velocities
     bool turned;     // a rod turned by more than 1/16 rad
+    bool first;      // the first pass of the position solve
+    bool coupled;    // chains meet: passes repeat (Gauss-Seidel)
     S worst;         // the largest correction of a length, m
   };
 
@@ -275,40 +290,89 @@ struct RodSolver {
   //   (L - a) / dt - r - (p / dt)^2 dt / 2L.
   // Everything is a speed: in fixed point the drop |p|^2 / 2L, a fraction
   // of a unit at 1 kHz, keeps its precision.
-  static S rightSide(W& world, const Slot& s, Pass& pass) {
+  static S rightSide(W& world, const Slot& s, Pass& pass, S& move) {
     const V& u = s.params.link.direction;
     const V w = relativeVelocity(world, s);
     const S radial = dot(w, u);
     if (!pass.positions) return -radial;
     const V d = span(world, s);
     const S along = dot(d, u);
+    const S invL = s.params.link.inverseLength;
+    // Across u, as a speed: the rod's offset now, p0 = d - a u (zero but
+    // for rounding, unless the sketch or a contact moved its ends), over dt,
+    // plus the speed across u, w - r u. The rod at the end of the step is
+    // d + dt w, of length a + dt r + |p|^2 / 2L to second order, p the
+    // whole offset across u: the drop |p|^2 / 2L, as a speed.
     V q = d;
     q.addScaled(u, -along);
     q *= pass.invDt;
     q += w;
     q.addScaled(u, -radial);
-    const S invL = s.params.link.inverseLength;
     const S drop = detail::half(pass.byDt(q.magnitudeSquared())) * invL;
-    const S right = (s.params.link.length - along) * pass.invDt - radial - drop;
-    const S correction = pass.byDt(fabs(right));
+    // The rod's error now, L - a (rounding of earlier steps, or what the
+    // passes before left), is mended by moving the ends alone: mended
+    // through the speed, as (L - a) / dt, a unit of rounding would be a
+    // large speed along the rod, and the velocity solve would leave a little
+    // of it across the rod every step (Q16.16 pendulums gained a few % a
+    // minute that way), and rods that cannot all be held (a loop of
+    // impossible lengths) would pump speed into the world. A rod that
+    // turns fast (more than 1/16 rad in the step) takes further passes
+    // through the speed, aiming at the exact length of the predicted rod,
+    // d + dt w, with a square root (second order is not enough there).
+    S right = -radial - drop;
+    move = (s.params.link.length - along) * pass.invDt;
+    const bool fast = pass.byDt(drop) * invL > S(1.0 / 512);
+    if (!pass.first && !fast && !pass.coupled) {
+      // Along a chain, what a further pass finds is the motion that a
+      // fast neighbour's correction caused: speed too.
+      right += move;
+      move = S();
+    }
+    // (A rod off its length by more than L/16 is not one that moves fast
+    // but one that the others keep from its length: position only.)
+    if (fast && fabs(s.params.link.length - along) * invL < S(1.0 / 16)) {
+      pass.turned = true;
+      if (!pass.first) {
+        V predicted = d;
+        for (uint8_t k = 0; k < W::kDimensions; ++k) {
+          predicted[k] += pass.byDt(w[k]);
+        }
+        right = (s.params.link.length - predicted.magnitude()) * pass.invDt;
+        move = S();
+      }
+    }
+    const S correction = fabs(pass.byDt(move + right));
     if (correction > pass.worst) pass.worst = correction;
-    if (pass.byDt(drop) * invL > S(1.0 / 512)) pass.turned = true;
     return right;
   }
 
-  // Applies rod s's impulse mu (per unit mass along u): velocities, and
-  // for the position solve the positions by dt times the change.
-  static void apply(W& world, const Slot& s, S mu, const Pass& pass) {
+  // Applies rod s's impulse mu (per unit mass along u) to the velocities.
+  static void apply(W& world, const Slot& s, S mu, const Pass&) {
     if (detail::isZero(mu)) return;
     const V& u = s.params.link.direction;
     P& a = world.particleAt(s.a);
-    if (!a.isStatic()) push(a, u * (a.inverseMass * mu), pass);
+    if (!a.isStatic()) a.velocity.addScaled(u, a.inverseMass * mu);
     if (s.b != kAnchorIndex) {
       P& b = world.particleAt(s.b);
-      if (!b.isStatic()) push(b, u * -(b.inverseMass * mu), pass);
+      if (!b.isStatic()) b.velocity.addScaled(u, -(b.inverseMass * mu));
     }
   }
-  static void push(P& p, const V& dv, const Pass&) { p.velocity += dv; }
+
+  // Moves rod s's ends along u by dt times `speed` per unit mass: the
+  // first pass's correction of the length error, without a velocity.
+  static void move(W& world, const Slot& s, S speed, const Pass& pass) {
+    if (detail::isZero(speed)) return;
+    const V& u = s.params.link.direction;
+    P& a = world.particleAt(s.a);
+    if (!a.isStatic()) shift(a.position, u, a.inverseMass * speed, pass);
+    if (s.b != kAnchorIndex) {
+      P& b = world.particleAt(s.b);
+      if (!b.isStatic()) shift(b.position, u, -(b.inverseMass * speed), pass);
+    }
+  }
+  static void shift(V& x, const V& u, S speed, const Pass& pass) {
+    for (uint8_t k = 0; k < W::kDimensions; ++k) x[k] += pass.byDt(u[k] * speed);
+  }
 
   // The coupling C_ij of rod r with the rod before it in its chain.
   static S coupling(W& world, const Slot& r, const Slot& prev) {
@@ -334,11 +398,12 @@ struct RodSolver {
       }
       // Down the chain: eliminate the coupling with the rod before.
       uint8_t last = head;
-      S previousInversePivot = S(), previousRight = S();
+      S previousInversePivot = S(), previousRight = S(), previousMove = S();
       for (uint8_t i = head; i != kNoIndex;
            i = world.constraintAt(i).params.link.next) {
         const Slot& s = world.constraintAt(i);
-        S right = rightSide(world, s, pass);
+        S move = S();
+        S right = rightSide(world, s, pass, move);
         S pivot = inverseMassOf(world, s.a) + inverseMassOf(world, s.b);
         S multiplier = S();
         if (i != head) {
@@ -347,6 +412,7 @@ struct RodSolver {
             multiplier = c * previousInversePivot;
             pivot -= multiplier * c;
             right -= multiplier * previousRight;
+            move -= multiplier * previousMove;
           }
         }
         // Both ends immovable: no impulse.
@@ -354,17 +420,21 @@ struct RodSolver {
             detail::isPositive(pivot) ? S(1) / pivot : S();
         rows[i].multiplier = multiplier;
         rows[i].y = right * inversePivot;
+        rows[i].yMove = move * inversePivot;
         previousInversePivot = inversePivot;
         previousRight = right;
+        previousMove = move;
         last = i;
       }
       // Back up the chain: mu_i = y_i - m_(i+1) mu_(i+1), applied at once.
-      S mu = S();
+      S mu = S(), muMove = S();
       S nextMultiplier = S();
       for (uint8_t i = last; i != kNoIndex;
            i = world.constraintAt(i).params.link.prev) {
         mu = rows[i].y - nextMultiplier * mu;
+        muMove = rows[i].yMove - nextMultiplier * muMove;
         nextMultiplier = rows[i].multiplier;
+        if (pass.first) rows[i].moved = muMove;
         apply(world, world.constraintAt(i), mu, pass);
       }
     }

@@ -533,9 +533,19 @@ class World
                                   direction);
   }
 
-  // For the rod solver: x += v dt for every movable particle (the step
-  // leaves it to the solver when the world has rods).
+  // For the rod solver: x += v dt for every movable particle, then the
+  // rest of the uniform acceleration's kick (integrate() gave the first
+  // half). The step leaves both to the solver when the world has rods.
   void movePositions(const Scaler<S>& byDt) {
+    Vec rest;
+    if (kForces != 0) {
+      const Vec& uniform = UniformStore::uniform();
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (detail::isZero(uniform[k])) continue;
+        const S whole = byDt(uniform[k]);
+        rest[k] = whole - detail::half(whole);
+      }
+    }
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
       if ((p.flags & (ParticleType::kInUse | ParticleType::kStatic)) !=
@@ -545,6 +555,11 @@ class World
       move(p.position.x, p.velocity.x, byDt);
       move(p.position.y, p.velocity.y, byDt);
       if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
+      if (kForces != 0) {
+        accelerate(p.velocity.x, S(), rest.x, byDt);
+        accelerate(p.velocity.y, S(), rest.y, byDt);
+        if (Dim == 3) accelerate(p.velocity[2], S(), rest[2], byDt);
+      }
     }
   }
 
@@ -681,6 +696,14 @@ class World
       const Vec& uniform = UniformStore::uniform();
       for (uint8_t k = 0; k < Dim; ++k) {
         if (!detail::isZero(uniform[k])) uniformStep[k] = byDt(uniform[k]);
+      }
+      // With rods, half of it now and the rest after the positions move
+      // (movePositions()): kick, drift, kick, the step of RATTLE, whose
+      // energy error is second order in dt.
+      if (!andMove) {
+        for (uint8_t k = 0; k < Dim; ++k) {
+          uniformStep[k] = detail::half(uniformStep[k]);
+        }
       }
     }
     S dampingUnit = S();
