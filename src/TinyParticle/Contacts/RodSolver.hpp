@@ -75,9 +75,10 @@ struct RodSolver {
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (world.rodState() & W::kRodsChanged) findChains(world);
     const bool coupled = (world.rodState() & W::kRodsCoupled) != 0;
-    Pass pass(byDt, S(1) / dt);
+    Pass pass(byDt, world.inverseDt(dt));
     pass.coupled = coupled;
     Row rows[W::kConstraintCapacity > 0 ? W::kConstraintCapacity : 1];
+    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) rows[i].lone = false;
     // The position solve is exact to second order in each rod's turn: a
     // rod that turned by more than 1/16 rad in the step, or coupled chains,
     // take further passes (Newton's iterations) until every rod is within
@@ -102,7 +103,10 @@ struct RodSolver {
     // chains took the errors into the speed (a fast rod's exact length).
     if (n == 1 || coupled) {
       for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-        if (isRodAt(world, i)) {
+        if (!isRodAt(world, i)) continue;
+        if (rows[i].lone) {
+          lonePush(world, world.constraintAt(i), rows[i].moved, pass, true);
+        } else {
           move(world, world.constraintAt(i), rows[i].moved, pass);
         }
       }
@@ -128,6 +132,7 @@ struct RodSolver {
     S y;           // the row's right side, eliminated and divided
     S yMove;       // the same for the length errors (position solve)
     S moved;       // the first pass's position impulse, applied after all
+    bool lone;     // a rod alone, one end immovable: impulses per unit mass
   };
 
   struct Pass {
@@ -303,12 +308,9 @@ struct RodSolver {
     // plus the speed across u, w - r u. The rod at the end of the step is
     // d + dt w, of length a + dt r + |p|^2 / 2L to second order, p the
     // whole offset across u: the drop |p|^2 / 2L, as a speed.
-    V q = d;
-    q.addScaled(u, -along);
-    q *= pass.invDt;
-    q += w;
-    q.addScaled(u, -radial);
-    const S drop = detail::half(pass.byDt(q.magnitudeSquared())) * invL;
+    const S drop =
+        detail::half(pass.byDt(acrossSquared(d, w, u, along, radial, pass))) *
+        invL;
     // The rod's error now, L - a (rounding of earlier steps, or what the
     // passes before left), is mended by moving the ends alone: mended
     // through the speed, as (L - a) / dt, a unit of rounding would be a
@@ -341,9 +343,30 @@ struct RodSolver {
         move = S();
       }
     }
-    const S correction = fabs(pass.byDt(move + right));
-    if (correction > pass.worst) pass.worst = correction;
+    if (pass.coupled || pass.turned || !pass.first) {
+      const S correction = fabs(pass.byDt(move + right));
+      if (correction > pass.worst) pass.worst = correction;
+    }
     return right;
+  }
+
+  // |(d - a u) / dt + (w - r u)|^2, the square of the speed across u. In
+  // 2D that is one component, along n = (-u_y, u_x).
+  static S acrossSquared(const Vec<S, 2>& d, const Vec<S, 2>& w,
+                         const Vec<S, 2>& u, S, S, const Pass& pass) {
+    const S across =
+        (u.x * d.y - u.y * d.x) * pass.invDt + (u.x * w.y - u.y * w.x);
+    return across * across;
+  }
+  static S acrossSquared(const Vec<S, 3>& d, const Vec<S, 3>& w,
+                         const Vec<S, 3>& u, S along, S radial,
+                         const Pass& pass) {
+    V q = d;
+    q.addScaled(u, -along);
+    q *= pass.invDt;
+    q += w;
+    q.addScaled(u, -radial);
+    return q.magnitudeSquared();
   }
 
   // Applies rod s's impulse mu (per unit mass along u) to the velocities.
@@ -355,6 +378,23 @@ struct RodSolver {
     if (s.b != kAnchorIndex) {
       P& b = world.particleAt(s.b);
       if (!b.isStatic()) b.velocity.addScaled(u, -(b.inverseMass * mu));
+    }
+  }
+
+  // A lone rod's moving end: its velocity (or, for `position`, its
+  // position by dt times that) changes by `speed` along u, away from the
+  // other end.
+  static void lonePush(W& world, const Slot& s, S speed, const Pass& pass,
+                       bool position) {
+    if (detail::isZero(speed)) return;
+    const V& u = s.params.link.direction;
+    P& a = world.particleAt(s.a);
+    P& moving = a.isStatic() ? world.particleAt(s.b) : a;
+    if (&moving != &a) speed = -speed;
+    if (position) {
+      shift(moving.position, u, speed, pass);
+    } else {
+      moving.velocity.addScaled(u, speed);
     }
   }
 
@@ -394,6 +434,21 @@ struct RodSolver {
     for (uint8_t head = 0; head < W::kConstraintCapacity; ++head) {
       if (!isRodAt(world, head) ||
           world.constraintAt(head).params.link.prev != kNoIndex) {
+        continue;
+      }
+      // A rod alone with one end immovable (a pendulum, a lever): the
+      // moving end's change of speed is the right side itself, along u.
+      const Slot& first = world.constraintAt(head);
+      if (pass.first && pass.positions) {
+        rows[head].lone = first.params.link.next == kNoIndex &&
+                          detail::isZero(inverseMassOf(world, first.a)) !=
+                              detail::isZero(inverseMassOf(world, first.b));
+      }
+      if (rows[head].lone) {
+        S move = S();
+        const S right = rightSide(world, first, pass, move);
+        if (pass.first) rows[head].moved = move;
+        lonePush(world, first, right, pass, false);
         continue;
       }
       // Down the chain: eliminate the coupling with the rod before.

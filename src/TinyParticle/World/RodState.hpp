@@ -1,6 +1,6 @@
 // What the world keeps for its rods (Contacts/RodSolver.hpp): the solver,
 // set by the first addRod() (so a world without rods links no solver code),
-// and the solver's state bits. Only a world with constraint slots has it;
+// the solver's state bits, and 1 / dt for the last dt. Only a world with constraint slots has it;
 // without them it is an empty base class and takes no RAM.
 #pragma once
 
@@ -9,28 +9,39 @@
 namespace tinyparticle {
 namespace detail {
 
-template <typename Solve, bool kHasConstraints>
+template <typename Solve, typename S, bool kHasConstraints>
 struct RodState {
-  constexpr RodState() : mRodBits(0), mSolveRods(nullptr) {}
+  constexpr RodState() : mRodBits(0), mSolveRods(nullptr), mDt(), mInverseDt() {}
   uint8_t rodBits() const { return mRodBits; }
   void setRodBits(uint8_t bits) { mRodBits = bits; }
   void addRodBits(uint8_t bits) { mRodBits |= bits; }
   Solve rodSolver() const { return mSolveRods; }
   void setRodSolver(Solve solve) { mSolveRods = solve; }
+  // 1 / dt, divided again only when dt changes.
+  S inverseOf(S dt) {
+    if (!(dt == mDt)) {
+      mDt = dt;
+      mInverseDt = S(1) / dt;
+    }
+    return mInverseDt;
+  }
 
  private:
   uint8_t mRodBits;
   Solve mSolveRods;
+  S mDt;
+  S mInverseDt;
 };
 
-template <typename Solve>
-struct RodState<Solve, false> {
+template <typename Solve, typename S>
+struct RodState<Solve, S, false> {
   constexpr RodState() {}
   uint8_t rodBits() const { return 0; }
   void setRodBits(uint8_t) {}
   void addRodBits(uint8_t) {}
   Solve rodSolver() const { return nullptr; }
   void setRodSolver(Solve) {}
+  S inverseOf(S dt) { return S(1) / dt; }
 };
 
 }  // namespace detail

@@ -66,7 +66,7 @@ class World
       private detail::RodState<
           void (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
                    const Scaler<S>&, S),
-          (kConstraints > 0)> {
+          S, (kConstraints > 0)> {
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
                     kConstraints < kAnchorIndex && kContacts < kAnchorIndex,
@@ -95,7 +95,7 @@ class World
   typedef detail::UniformAcceleration<Vec, (kForces > 0)> UniformStore;
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
-  typedef detail::RodState<RodSolve, (kConstraints > 0)> RodStore;
+  typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
 
  public:
   constexpr World()
@@ -581,6 +581,7 @@ class World
     return c.generate == &RodSolver<World>::generate;
   }
   uint8_t rodState() const { return RodStore::rodBits(); }
+  S inverseDt(S dt) { return RodStore::inverseOf(dt); }
   void setRodState(uint8_t state) { RodStore::setRodBits(state); }
 
   // True if that constraint is the particle collisions (contacts between two
