@@ -1,44 +1,34 @@
-// Rods and cables: contact generators that hold two particles (or a particle
-// and a fixed anchor) at a distance.
+// Cables: a contact generator that keeps two particles (or a particle and a
+// fixed anchor) at most a length apart. A cable only pulls, and only once
+// stretched to its length; it may bounce back with a restitution. (Rods,
+// which hold a length both ways, are solved together by RodSolver.hpp; they
+// share LinkParams.)
 //
-// A rod keeps the distance equal to its length: it makes one contact every
-// step, pushing the ends apart when too close and pulling them together when
-// too far (restitution 0), so a rod attached to a fixed point keeps its
-// length to the resolver's rounding. A cable only pulls, and only once
-// stretched to its length; it may bounce back with a restitution.
-//
-// Keeping the energy of a swing. Semi-implicit Euler moves the end along
-// the old tangent, and the contact then removes the velocity along the new
-// direction of the link. That velocity has two parts: what forces built
-// along the link in this step (b = g_r dt for gravity, which the rod's
-// tension cancels, as it should) and what the turn of the link by
-// theta = |v| dt / L explains, about |v| theta. Taking all of it away along
-// the new direction also shortens the tangential speed, by about
-// |v| theta^2 / 2 + b theta per step: a pendulum (L = 1 m, theta0 = 0.5,
-// dt = 1/256 s) lost a third of its energy in 10 s, the 0.15 m lever 94 %,
-// even in double precision, mostly through b theta. Reflecting the turned
-// part instead (restitution 1 for it) helps little: the inward velocity it
-// leaves pulls the end off the circle, and the position correction that
-// follows moves it against gravity. So while a link is closing, the
-// generator first scales the relative velocity by k, with
+// Keeping the energy of a swing on a taut cable. Semi-implicit Euler moves
+// the end along the old tangent, and the contact then removes the velocity
+// along the new direction of the link. That velocity has two parts: what
+// forces built along the link in this step (b = g_r dt for gravity, which
+// the cable's tension cancels, as it should) and what the turn of the link
+// by theta = |v| dt / L explains, about |v| theta. Taking all of it away
+// along the new direction also shortens the tangential speed, by about
+// |v| theta^2 / 2 + b theta per step (a pendulum on a link, L = 1 m,
+// theta0 = 0.5, dt = 1/256 s, lost a third of its energy in 10 s, even in
+// double precision). So while a cable is closing, the generator first
+// scales the part of the relative velocity across the link by k, with
 //   k^2 = 1 + (dt / L) (2 v_r - |v|^2 dt / L),   k ~ 1 + q (v_r - |v|^2 q / 2),
 // where v_r is the stretching speed and q = dt / L: after the resolver has
-// taken the speed along the link away, |v|^2 has lost only the square of
-// the part that the turn does not explain (the pull b, or a genuine
-// impact), and the tangential speed is what it would be had the velocity
-// turned with the link. A genuine pull along the link (no tangential speed)
-// gains nothing: k scales a zero tangential velocity. The energy error of a
-// swing is then the integrator's own, bounded and O(dt): the pendulum stays
-// within 0.8 % over 10 s at 1/256 s. The square root is expanded: the
-// dropped terms are O(dt^4) per step. In fixed point, a factor k - 1 below
-// eight units of the format is not applied (Margins::smallestFactor()):
-// rounded, it would be off by half of itself every step in the same
-// direction, and add energy (Q16.16 at dt = 1/1024 s, where it is one unit
-// or less: the pendulum gained 14 % in 10 s); there the link keeps its old,
-// lossy behaviour.
+// taken the speed along the link away, the tangential speed is what it
+// would be had the velocity turned with the link. A genuine pull along the
+// link (no tangential speed) gains nothing. The square root is expanded:
+// the dropped terms are O(dt^4) per step. In fixed point, a factor k - 1
+// below eight units of the format is not applied
+// (Margins::smallestFactor()): rounded, it would be off by half of itself
+// every step in the same direction, and add energy; there the cable keeps
+// the plain, slightly lossy behaviour.
 //
-// Cost per link and step: one square root and one division; while closing,
-// a few multiplies more (dt / L is a shift when dt is a power of two).
+// Cost per cable and step: one square root and one division; while
+// closing, a few multiplies more (dt / L is a shift when dt is a power of
+// two).
 #pragma once
 
 #include <stdint.h>
@@ -63,8 +53,8 @@ struct LinkParams {
   uint8_t prev;           // the rod before it, or kNoIndex
 };
 
-template <class W, bool kAnchored, bool kRod>
-struct LinkConstraint {
+template <class W, bool kAnchored>
+struct CableConstraint {
   typedef typename W::Scalar S;
   typedef typename W::Vec V;
   typedef typename W::ParticleType P;
@@ -86,7 +76,7 @@ struct LinkConstraint {
     if (detail::isZero(lengthSquared)) return;  // ends together: no direction
     S length = sqrt(lengthSquared);
     const S target = slot.params.link.length;
-    if (!kRod && length < target) return;  // slack cable
+    if (length < target) return;  // slack
     // The normal pushes a: away from b while too close, towards b while
     // too far (or exactly right: then the contact only removes the closing
     // velocity along the link).
@@ -103,14 +93,10 @@ struct LinkConstraint {
       return;
     }
     // Closing: keep the tangential speed that the turn of the link takes
-    // (see the top of this file): the relative velocity grows by
-    // relative * h, h = q (v_r - |v|^2 q / 2), v_r = -separating the
-    // stretching speed. For a rod the resolver then takes all the speed
-    // along the link away, the part of the growth along it included (the
-    // contact keeps the separating velocity from before: what is left,
-    // h v_r, below 1 % of it, the next step takes). A cable may bounce: only
-    // the part across the link grows, so that the bounce sees the speed
-    // along it as it was.
+    // (see the top of this file): the part of the relative velocity across
+    // the link grows by h, h = q (v_r - |v|^2 q / 2), v_r = -separating the
+    // stretching speed. Only the part across grows, so that the bounce sees
+    // the speed along the link as it was.
     P* movingB = (b != nullptr && !b->isStatic()) ? b : nullptr;
     V relative;
     const V* v = &a.velocity;  // to a fixed point: a's own velocity
@@ -125,11 +111,9 @@ struct LinkConstraint {
         fabs(h) < detail::Margins<S>::smallestFactor()) {
       // Too small for the scalar (Q16.16 at dt = 1/1024 s, Q24.8): rounded,
       // it would add energy at every step; the link takes a little instead.
-    } else if (kRod && movingB == nullptr) {
-      a.velocity.addScaled(a.velocity, h);  // a lever, a pendulum
     } else {
       V change = *v * h;
-      if (!kRod) change -= normal * (h * separating);
+      change -= normal * (h * separating);
       if (movingB == nullptr) {
         a.velocity += change;
       } else {

@@ -338,12 +338,12 @@ class World
   // A cable: at most `length` (m) apart; it bounces with `restitution`.
   ConstraintId addCable(ParticleId a, ParticleId b, S length, S restitution) {
     return addLink(a, b, length, restitution,
-                   &LinkConstraint<World, false, false>::generate);
+                   &CableConstraint<World, false>::generate);
   }
   ConstraintId addCable(ParticleId a, const Vec& anchor, S length,
                         S restitution) {
     return addAnchoredLink(a, anchor, length, restitution,
-                           &LinkConstraint<World, true, false>::generate);
+                           &CableConstraint<World, true>::generate);
   }
 
   // Changes a rod's or a cable's length. False if the id is not one.
