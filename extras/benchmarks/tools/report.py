@@ -309,9 +309,11 @@ def links_markdown(rows, prefix):
                   "The pendulum (L = 1 m, theta0 = 0.5 rad, 1 kg) for %s s at "
                   "each rate: the largest |E(t) - E(0)| over the run in its "
                   "swing energy m g L (1 - cos theta0), and cycles per step. "
-                  "Rates that are not powers of two get the nearest dt the "
-                  "scalar has (Q16.16: 1/200 s is 328 units of 2^-16 s, "
-                  "0.1 %% long)." % sweep[0].get("seconds", "60"), "",
+                  "Rates that are not powers of two get the scalar's own "
+                  "1 / rate, rounded to the nearest unit (Q16.16: up to "
+                  "0.7 %% off, 66 units of 2^-16 s for 1/1000 s); the "
+                  "double reference steps exactly 1 / rate." % sweep[0].get(
+                      "seconds", "60"), "",
                   "![Pendulum: largest energy error against step rate]"
                   "(%spendulum_energy.svg)" % prefix, ""]
         lines += md_table(

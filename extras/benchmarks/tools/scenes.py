@@ -124,11 +124,10 @@ COLUMNS = ["scene", "scalar", "dim", "n", "dt_ms", "cycles_per_step",
 
 
 def representable(frac, rate):
-    """Whether the scalar has a step near 1 / rate (within 1 %)."""
-    if frac is None:
-        return True
-    units = (1 << frac) / float(rate)
-    return units >= 100 or (units >= 1 and units == int(units))
+    """Whether the scalar has a step for this rate: at least one unit. It is
+    the scalar's own 1 / rate, rounded (Q16.16: 66 units of 2^-16 s for
+    1/1000 s, 0.7 % long)."""
+    return frac is None or (1 << frac) >= rate
 
 
 def decode(scalar, text):
