@@ -302,7 +302,7 @@ def links_markdown(rows, prefix):
 
         def ref(rate):
             for s in scalars:
-                if (rate, s) in cell:
+                if (rate, s) in cell and num(cell[(rate, s)]["ref_max_energy_err"]):
                     return fmt_err(cell[(rate, s)]["ref_max_energy_err"])
             return "NA"
         lines += ["", "## Pendulum energy against step rate", "",
@@ -374,14 +374,15 @@ def chains_plot(rows, out_dir, tmp):
         "set output %s" % quote(out),
         "set title 'Chain of rigid links: cycles per step against N (dt = 1/256 s; "
         "N = 16 on an ATmega2560)'",
-        "set logscale xy 2",
+        "set logscale x 2",
+        "set logscale y 10",
         "set xrange [1.7:19]",
         "set xtics (2, 4, 8, 16)",
         "set format y \"%.0s%c\"",
         "set xlabel 'beads N'",
         "set ylabel 'cycles per step'",
         "set grid",
-        "set key top left",
+        "set key bottom right",
         "plot " + ", \\\n     ".join(plots),
         ""])
     gnuplot(script, out)
@@ -393,11 +394,12 @@ def pendulum_plot(rows, out_dir, tmp):
     series = []
     for s in SCENE_SCALARS + ["double"]:
         column = "ref_max_energy_err" if s == "double" else "max_energy_err"
-        pick = (lambda r: r["scalar"] == SCENE_SCALARS[0]) if s == "double" else (
-            lambda r, s=s: r["scalar"] == s)
-        pts = sorted((1000.0 / num(r["dt_ms"]), num(r[column])) for r in rows
-                     if r["scene"] == "pendulum_sweep" and pick(r)
-                     and num(r[column]) and num(r["dt_ms"]))
+        found = {}  # rate: error (the reference is the same in every row)
+        for r in rows:
+            if (r["scene"] == "pendulum_sweep" and (s == "double" or r["scalar"] == s)
+                    and num(r[column]) and num(r["dt_ms"])):
+                found.setdefault(1000.0 / num(r["dt_ms"]), num(r[column]))
+        pts = sorted(found.items())
         if not pts:
             continue
         data = os.path.join(tmp, "sweep-%s.dat" % s)
