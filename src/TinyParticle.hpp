@@ -19,3 +19,4 @@
 #include "TinyParticle/Scenes/Pendulum.hpp"
 #include "TinyParticle/Scenes/Spring.hpp"
 #include "TinyParticle/Scenes/BouncingBalls.hpp"
+#include "TinyParticle/Scenes/Chain.hpp"

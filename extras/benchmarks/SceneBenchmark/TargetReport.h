@@ -1,6 +1,7 @@
 // What the Nano reports during a scene run: the cycles of every step (summed
-// over the first 2 s and over the last second) and the state of every particle
-// at t = 0, 1 s and 10 s, as the exact bits of the scalar in hex.
+// over the first 2 s and over the last second), the state of every particle
+// at t = 0, 1 s, 10 s and at the end, as the exact bits of the scalar in hex,
+// and the largest link and energy errors of the run.
 #pragma once
 
 #include <Arduino.h>
@@ -65,14 +66,14 @@ class TargetReport {
 
   void beforeStep() { cycles::start(); }
 
-  void afterStep(uint16_t step, uint16_t perSecond) {
+  void afterStep(uint32_t step, uint16_t perSecond, uint8_t seconds) {
     uint32_t spent = cycles::stop() - mWindow;
     if (step <= 300) mFirst300 += spent;
-    if (step <= 2 * perSecond) {
+    if (step <= 2 * uint32_t(perSecond)) {
       mFirst += spent;
       ++mFirstSteps;
     }
-    if (step > 9 * perSecond) {
+    if (step > uint32_t(seconds - 1) * perSecond) {
       mLast += spent;
       ++mLastSteps;
     }
@@ -94,6 +95,16 @@ class TargetReport {
       Serial.println();
     }
     Serial.flush();  // no UART interrupt inside the next timed step
+  }
+
+  // "M <largest link error> <largest energy error>" as float bits (the
+  // energy error is negative where the scene has no reference energy).
+  void errors(float link, float energy) {
+    Serial.print(F("M"));
+    printScalar(Float(link));
+    printScalar(Float(energy));
+    Serial.println();
+    Serial.flush();
   }
 
   // "T <span> <cycles> <steps>" for the first 2 s, the last second and the

@@ -128,12 +128,21 @@ def check_outputs(out_dir, stages):
         if not rows:
             problems.append("%s has no rows" % name)
         numbers(rows, numeric, name)
+        if stage == "scenes":
+            # the rigid-link columns, where the scene has rods
+            numbers([r for r in rows if r["scene"] == "chain"],
+                    ["max_link_err", "max_energy_err", "ref_max_link_err",
+                     "ref_max_energy_err"], name)
     if "report" in stages:
         for name in ("ops.md", "scenes.md", "memory.md"):
             path = os.path.join(out_dir, name)
             if not os.path.exists(path) or "Generated, do not edit" not in open(path).read():
                 problems.append("%s is missing or not marked generated" % name)
-        for name in ("ops.svg", "scenes.svg"):
+        plots = ["ops.svg", "scenes.svg"]
+        scene_rows = read_csv(os.path.join(out_dir, "scenes.csv")) or []
+        if any(r["scene"] == "chain" for r in scene_rows):
+            plots.append("chains.svg")
+        for name in plots:
             path = os.path.join(out_dir, name)
             if not os.path.exists(path) or os.path.getsize(path) < 1000:
                 problems.append("%s is missing or empty" % name)

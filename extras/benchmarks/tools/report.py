@@ -131,6 +131,12 @@ SCENE_SCALARS = ["Q16.16", "Q24.8", "float"]
 def scene_label(r):
     if r["scene"] == "balls":
         return "balls, N = %s" % r["n"]
+    if r["scene"] == "chain":
+        return "chain, N = %s%s" % (r["n"], " (Mega)" if r.get("board") == "mega" else "")
+    if r["scene"] == "pendulum_sweep":
+        return "pendulum, %s s" % r.get("seconds", "60")
+    if r["scene"] == "pendulum_short":
+        return "short pendulum"
     return "%s %sD" % (r["scene"], r["dim"]) if r["scene"] == "lever" else r["scene"]
 
 
@@ -150,9 +156,18 @@ def scenes_markdown(rows, tools, quick):
         "(L = 1 m, theta0 = 0.5 rad, 1 kg), the spring (1 kg, k = 100 N/m, "
         "released 0.1 m from rest) and N balls in the 1 m box "
         "(Scenes/BouncingBalls.hpp, restitution 0.8); 2D unless marked 3D. "
+        "Rigid links (issue 9, Scenes/Chain.hpp): the whip chain of N beads "
+        "of 0.05 kg on rods of 0.125 m, released level from a pivot; the "
+        "rope, 7 beads damped at 1/s on 8 rods of 0.1 m between posts 0.6 m "
+        "apart, 20 s; the short pendulum (L = 0.05 m, theta0 = 0.5 rad, "
+        "0.1 kg); and the pendulum swept over step rates for 60 s. "
         "n counts the particles, the fixed pivot of the lever and of the "
-        "pendulum included. NA: the scalar cannot represent dt, or (position "
-        "errors) the scene is chaotic (more than 2 balls).",
+        "pendulum included, but the beads only for the chain and the rope. "
+        "The chain of 16 beads runs on a simulated ATmega2560 (Mega, 16 MHz, "
+        "the same AVR core and instruction timings): its world does not fit "
+        "in the Nano's 2 KB of RAM. NA: the scalar cannot represent dt, or "
+        "(position errors) the scene is chaotic (more than 2 balls), or "
+        "(energy errors) the scene loses energy by design (balls, rope).",
         "",
         "- cycles/step: mean over the first 2 s; first 300: mean over the "
         "first 300 steps (how the engine issue states the lever goal); "
@@ -164,7 +179,15 @@ def scenes_markdown(rows, tools, quick):
         "integrator and the physics do without rounding (bouncing balls lose "
         "energy at every bounce). Energies are computed in double from the "
         "reported states; heights count from the lowest point the scene can "
-        "reach.",
+        "reach. For the chains and the pendulums of issue 9 the drift is in "
+        "the reference energy below instead of E(0).",
+        "- max link error: the largest |length / L - 1| of any rod over the "
+        "whole run; max energy error: the largest |E(t) - E(0)| over the "
+        "run (E after every step: float on the Nano, double on the PC) in "
+        "the scene's reference energy: E_fall = m g 0.125 N (N + 1) / 2 for "
+        "the chains (m = 0.05 kg), the swing m g L (1 - cos theta0) for the "
+        "pendulums, m g L for the lever (from level), k (0.1 m)^2 / 2 for "
+        "the spring. The reference columns are the double run's.",
         "",
         "![Cycles per step against the number of balls](scenes.svg)", "",
         "## Cycles per step at dt = 1/256 s", ""]
@@ -178,15 +201,19 @@ def scenes_markdown(rows, tools, quick):
     lines += md_table(["scene"] + scalars, [
         [l] + [fmt_cycles(at[(l, s)]["cycles_per_step"]) if (l, s) in at else ""
                for s in scalars] for l in labels])
+    lines += links_markdown(rows, "")
     lines += ["", "## All figures", ""]
     lines += md_table(
         ["scene", "scalar", "dt (s)", "cycles/step", "first 300", "settled",
-         "pos. error 1 s", "pos. error 10 s", "energy drift", "reference drift"],
+         "pos. error 1 s", "pos. error 10 s", "energy drift", "reference drift",
+         "max link error", "max energy error", "reference max energy error"],
         [[scene_label(r), r["scalar"], dt_label(r["dt_ms"]),
           fmt_cycles(r["cycles_per_step"]), fmt_cycles(r.get("cycles_first_300")),
           fmt_cycles(r["cycles_last_1s"]),
           fmt_err(r["pos_err_1s"]), fmt_err(r["pos_err_10s"]),
-          fmt_err(r["energy_drift"]), fmt_err(r["ref_energy_drift"])]
+          fmt_err(r["energy_drift"]), fmt_err(r["ref_energy_drift"]),
+          fmt_err(r.get("max_link_err")), fmt_err(r.get("max_energy_err")),
+          fmt_err(r.get("ref_max_energy_err"))]
          for r in rows])
     lines.append("")
     return "\n".join(lines)
@@ -229,6 +256,177 @@ def scenes_plot(rows, out_dir, tmp):
         "set ylabel 'cycles per step'",
         "set grid",
         "set key top left",
+        "plot " + ", \\\n     ".join(plots),
+        ""])
+    gnuplot(script, out)
+    return out
+
+
+def growth(rows, r):
+    """Cycles per step over those of the chain half as long (same scalar and
+    dt), or None."""
+    half = [o for o in rows if o["scene"] == "chain" and o["scalar"] == r["scalar"]
+            and o["dt_ms"] == r["dt_ms"] and num(o["n"]) == num(r["n"]) / 2]
+    if not half or not num(half[0]["cycles_per_step"]) or not num(r["cycles_per_step"]):
+        return None
+    return num(r["cycles_per_step"]) / num(half[0]["cycles_per_step"])
+
+
+def links_markdown(rows, prefix):
+    """The rigid-link tables of issue 9: chains, the step-rate sweep, and the
+    other scenes with rods. prefix: the path from the page to this folder."""
+    lines = []
+    chains = [r for r in rows if r["scene"] == "chain"]
+    if chains:
+        lines += ["", "## Chains of rigid links", "",
+                  "The whip chain of N beads (issue 9). Goal: at most x2.1 "
+                  "cycles per step for each doubling of N (the dashed line in "
+                  "the plot).", "",
+                  "![Chain: cycles per step against N](%schains.svg)" % prefix, ""]
+        lines += md_table(
+            ["N", "scalar", "dt (s)", "cycles/step", "x per doubling",
+             "max link error", "max energy error", "reference max link error",
+             "reference max energy error"],
+            [[r["n"] + (" (Mega)" if r.get("board") == "mega" else ""), r["scalar"],
+              dt_label(r["dt_ms"]), fmt_cycles(r["cycles_per_step"]),
+              "%.2f" % growth(rows, r) if growth(rows, r) else "",
+              fmt_err(r["max_link_err"]), fmt_err(r["max_energy_err"]),
+              fmt_err(r["ref_max_link_err"]), fmt_err(r["ref_max_energy_err"])]
+             for r in sorted(chains, key=lambda r: (r["scalar"] != "Q16.16",
+                                                    -num(r["dt_ms"]), num(r["n"])))])
+    sweep = [r for r in rows if r["scene"] == "pendulum_sweep"]
+    if sweep:
+        rates = sorted(set(round(1000.0 / num(r["dt_ms"])) for r in sweep))
+        cell = dict(((round(1000.0 / num(r["dt_ms"])), r["scalar"]), r) for r in sweep)
+        scalars = [s for s in SCENE_SCALARS if any(r["scalar"] == s for r in sweep)]
+
+        def ref(rate):
+            for s in scalars:
+                if (rate, s) in cell and num(cell[(rate, s)]["ref_max_energy_err"]):
+                    return fmt_err(cell[(rate, s)]["ref_max_energy_err"])
+            return "NA"
+        lines += ["", "## Pendulum energy against step rate", "",
+                  "The pendulum (L = 1 m, theta0 = 0.5 rad, 1 kg) for %s s at "
+                  "each rate: the largest |E(t) - E(0)| over the run in its "
+                  "swing energy m g L (1 - cos theta0), and cycles per step. "
+                  "Rates that are not powers of two get the scalar's own "
+                  "1 / rate, rounded to the nearest unit (Q16.16: up to "
+                  "0.7 %% off, 66 units of 2^-16 s for 1/1000 s); the "
+                  "double reference steps exactly 1 / rate." % sweep[0].get(
+                      "seconds", "60"), "",
+                  "![Pendulum: largest energy error against step rate]"
+                  "(%spendulum_energy.svg)" % prefix, ""]
+        lines += md_table(
+            ["rate (Hz)"] + ["%s max energy error" % s for s in scalars]
+            + ["double max energy error"]
+            + ["%s cycles/step" % s for s in scalars]
+            + ["%s max link error" % s for s in scalars],
+            [[str(rate)] + [fmt_err(cell[(rate, s)]["max_energy_err"])
+                            if (rate, s) in cell else "" for s in scalars]
+             + [ref(rate)]
+             + [fmt_cycles(cell[(rate, s)]["cycles_per_step"])
+                if (rate, s) in cell else "" for s in scalars]
+             + [fmt_err(cell[(rate, s)]["max_link_err"])
+                if (rate, s) in cell else "" for s in scalars]
+             for rate in rates])
+    others = [r for r in rows if r["scene"] in ("lever", "pendulum", "pendulum_short",
+                                                "rope")
+              and num(r.get("max_link_err")) is not None]
+    if others:
+        lines += ["", "## Other scenes with rods", ""]
+        lines += md_table(
+            ["scene", "scalar", "dt (s)", "cycles/step", "max link error",
+             "max energy error", "reference max link error",
+             "reference max energy error"],
+            [[scene_label(r), r["scalar"], dt_label(r["dt_ms"]),
+              fmt_cycles(r["cycles_per_step"]), fmt_err(r["max_link_err"]),
+              fmt_err(r["max_energy_err"]), fmt_err(r["ref_max_link_err"]),
+              fmt_err(r["ref_max_energy_err"])] for r in others])
+    return lines
+
+
+def chains_plot(rows, out_dir, tmp):
+    """Chain: cycles per step against N, log-log, dt = 1/256, with the goal
+    line (x2.1 per doubling from the Q16.16 chain of 2)."""
+    series = []
+    for s in SCENE_SCALARS:
+        pts = sorted((int(r["n"]), num(r["cycles_per_step"])) for r in rows
+                     if r["scene"] == "chain" and r["scalar"] == s
+                     and dt_label(r["dt_ms"]) == "1/256" and num(r["cycles_per_step"]))
+        if not pts:
+            continue
+        data = os.path.join(tmp, "chain-%s.dat" % s)
+        with open(data, "w") as f:
+            for n, c in pts:
+                f.write("%d %s\n" % (n, c))
+        series.append((s, data, pts))
+    if not series:
+        return None
+    out = os.path.join(out_dir, "chains.svg")
+    base_n, base_c = series[0][2][0]
+    plots = ["%s using 1:2 with linespoints pt 7 lw 2 lc rgb '%s' title '%s'" % (
+        quote(data), COLORS[s], s) for s, data, _ in series]
+    plots.append("%g * (x / %d) ** (log(2.1) / log(2)) with lines dt 2 lw 1 "
+                 "lc rgb '#555555' title 'goal: x2.1 per doubling (from %s, N = %d)'"
+                 % (base_c, base_n, series[0][0], base_n))
+    script = "\n".join([
+        "set terminal svg size 800,560 font 'sans,11'",
+        "set output %s" % quote(out),
+        "set title 'Chain of rigid links: cycles per step against N (dt = 1/256 s; "
+        "N = 16 on an ATmega2560)'",
+        "set logscale x 2",
+        "set logscale y 10",
+        "set xrange [1.7:19]",
+        "set xtics (2, 4, 8, 16)",
+        "set format y \"%.0s%c\"",
+        "set xlabel 'beads N'",
+        "set ylabel 'cycles per step'",
+        "set grid",
+        "set key bottom right",
+        "plot " + ", \\\n     ".join(plots),
+        ""])
+    gnuplot(script, out)
+    return out
+
+
+def pendulum_plot(rows, out_dir, tmp):
+    """Pendulum sweep: largest energy error against the step rate."""
+    series = []
+    for s in SCENE_SCALARS + ["double"]:
+        column = "ref_max_energy_err" if s == "double" else "max_energy_err"
+        found = {}  # rate: error (the reference is the same in every row)
+        for r in rows:
+            if (r["scene"] == "pendulum_sweep" and (s == "double" or r["scalar"] == s)
+                    and num(r[column]) and num(r["dt_ms"])):
+                found.setdefault(1000.0 / num(r["dt_ms"]), num(r[column]))
+        pts = sorted(found.items())
+        if not pts:
+            continue
+        data = os.path.join(tmp, "sweep-%s.dat" % s)
+        with open(data, "w") as f:
+            for rate, e in pts:
+                f.write("%.6g %s\n" % (rate, e))
+        series.append((s, data))
+    if not series:
+        return None
+    out = os.path.join(out_dir, "pendulum_energy.svg")
+    colors = dict(COLORS, double="#000000")
+    plots = ["%s using 1:2 with linespoints pt 7 lw %d %slc rgb '%s' title '%s'" % (
+        quote(data), 1 if s == "double" else 2, "dt 2 " if s == "double" else "",
+        colors[s], s + (" (reference)" if s == "double" else ""))
+        for s, data in series]
+    script = "\n".join([
+        "set terminal svg size 800,560 font 'sans,11'",
+        "set output %s" % quote(out),
+        "set title 'Pendulum (1 m, 0.5 rad, 60 s): largest energy error against step rate'",
+        "set logscale xy",
+        "set xrange [100:2600]",
+        "set xtics (128, 256, 512, 1024, 2048)",
+        "set format y '10^{%L}'",
+        "set xlabel 'steps per second'",
+        "set ylabel 'max |E(t) - E(0)| / (m g L (1 - cos theta0))'",
+        "set grid",
+        "set key top right",
         "plot " + ", \\\n     ".join(plots),
         ""])
     gnuplot(script, out)
@@ -404,7 +602,10 @@ def readme_summary(out_dir, tools):
                    if (l, s) in at else "" for s in scalars] + [reference(l)]
             for l in labels])
         lines += ["", "![Cycles per step against the number of balls]"
-                  "(extras/benchmarks/scenes.svg)", ""]
+                  "(extras/benchmarks/scenes.svg)"]
+        lines += [l.replace("## ", "### ") for l in
+                  links_markdown(scene_rows, "extras/benchmarks/")]
+        lines.append("")
     if mem_rows:
         combos = []
         for r in mem_rows:
@@ -467,9 +668,10 @@ def generate(out_dir, tools, quick=False, update_readme=False):
         if scene_rows:
             write(os.path.join(out_dir, "scenes.md"),
                   scenes_markdown(scene_rows, tools, quick))
-            p = scenes_plot(scene_rows, out_dir, tmp)
-            if p:
-                log("wrote %s" % os.path.relpath(p, REPO))
+            for plot in (scenes_plot, chains_plot, pendulum_plot):
+                p = plot(scene_rows, out_dir, tmp)
+                if p:
+                    log("wrote %s" % os.path.relpath(p, REPO))
         mem_rows = read_csv(os.path.join(out_dir, "memory.csv"))
         if mem_rows:
             write(os.path.join(out_dir, "memory.md"),

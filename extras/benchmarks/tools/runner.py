@@ -24,15 +24,17 @@ def log(msg):
     print("bench: " + msg, file=sys.stderr, flush=True)
 
 
-def nano_build(sketch_dir, build_dir, defines=()):
-    """Compile; return (elf path, flash bytes, ram bytes)."""
-    cmd = [os.path.join(SCRIPTS, "nano-build"), sketch_dir, build_dir]
+def nano_build(sketch_dir, build_dir, defines=(), mega=False):
+    """Compile (for a Mega 2560 with mega); return (elf path, flash bytes,
+    ram bytes)."""
+    cmd = [os.path.join(SCRIPTS, "nano-build")] + (["--mega"] if mega else [])
+    cmd += [sketch_dir, build_dir]
     cmd += ["-D%s=%s" % (k, v) for k, v in defines]
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                           universal_newlines=True)
     if proc.returncode != 0:
         raise BenchError("build of %s %s failed:\n%s" % (
-            os.path.basename(sketch_dir), " ".join(cmd[3:]), proc.stderr[-4000:]))
+            os.path.basename(sketch_dir), " ".join(cmd[1:]), proc.stderr[-4000:]))
     figures = {}
     with open(os.path.join(build_dir, "nano-build.txt")) as f:
         for line in f:
@@ -41,10 +43,10 @@ def nano_build(sketch_dir, build_dir, defines=()):
     return figures["elf"], int(figures["flash"]), int(figures["ram"])
 
 
-def simavr_run(elf, timeout=600, until=r"^E$", log_path=None):
+def simavr_run(elf, timeout=600, until=r"^E$", log_path=None, mcu="atmega328p"):
     """Run an ELF in simavr until a line matches `until`; return its lines."""
     cmd = [os.path.join(SCRIPTS, "simavr-run"), elf, "--timeout", str(timeout),
-           "--until", until]
+           "--until", until, "--mcu", mcu]
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                           universal_newlines=True)
     if log_path:

@@ -1,10 +1,10 @@
 // Test support: rigid links (Contacts/RodSolver.hpp) for any scalar.
 //
-// The whip chain of issue 9: a fixed pivot at (0, 0), N beads of 0.05 kg at
-// (0.125 i, 0), rods of 0.125 m between neighbours (the first to the
-// pivot), gravity on all, released from rest. Energies are in units of the
-// fall energy E_fall = m g 0.125 N (N + 1) / 2, what the chain gives up
-// falling from level to hanging.
+// The whip chain of issue 9 (Scenes/Chain.hpp, buildChain): a fixed pivot
+// at (0, 0), N beads of 0.05 kg at (0.125 i, 0), rods of 0.125 m between
+// neighbours (the first to the pivot), gravity on all, released from rest.
+// Energies are in units of the fall energy E_fall = m g 0.125 N (N + 1) / 2,
+// what the chain gives up falling from level to hanging.
 // Not included by TinyParticle.h: include it after <TinyParticle.h>.
 #pragma once
 
@@ -27,7 +27,7 @@ struct ChainResult {
 template <typename S>
 struct ChainChecks {
   static const uint8_t kMaxBeads = 8;
-  typedef World<S, 2, kMaxBeads + 1, 1, kMaxBeads, 0> W;
+  typedef ChainWorld<S, 2, kMaxBeads> W;
 
   static float lengthOf(const W& w, uint8_t a, uint8_t b) {
     const float dx = w.particleAt(a).position.x.toFloat() -
@@ -51,14 +51,7 @@ struct ChainChecks {
   static ChainResult run(uint8_t N, uint16_t rate, uint16_t steps) {
     static W w;  // (static: a world on the Nano's stack is too large)
     w = W();
-    ParticleId previous = w.addFixedParticle(Vec2<S>(S(), S()));
-    for (uint8_t i = 1; i <= N; ++i) {
-      ParticleId bead =
-          w.addParticle(Vec2<S>(S(0.125) * S(long(i)), S()), S(0.05));
-      w.addRod(bead, previous, S(0.125));
-      previous = bead;
-    }
-    w.addGravity();
+    buildChain(w, N);  // Scenes/Chain.hpp, in this one world type
     const float fall = 0.05f * 9.81f * 0.125f * N * (N + 1) / 2;
     const float start = energy(w, N);
     ChainResult r = {0, 0, 0};
