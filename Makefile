@@ -13,7 +13,7 @@ JOBS ?= 2
 # The demo example (DEMO=examples/Name runs another one).
 DEMO ?= examples/BouncingBalls
 
-.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick clean
+.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick verify-asm clean
 
 help:
 	@sed -n '3,4p' Makefile | sed 's/^# *//'
@@ -61,6 +61,12 @@ bench:
 bench-quick:
 	@$(SCRIPTS)/setup-packages bench
 	@$(MAKE) --no-print-directory -C extras/benchmarks quick
+
+# The AVR assembly against the portable reference, by input class, on simavr
+# (extras/verify-asm/README.md). Long: shards run JOBS at a time.
+verify-asm:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/verify-asm --jobs $(JOBS) $(VERIFY_ASM_FLAGS)
 
 clean:
 	rm -rf build
