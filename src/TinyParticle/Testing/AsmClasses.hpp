@@ -846,12 +846,12 @@ inline int32_t withSign(uint32_t m, bool negative) {
   return signedFrom(negative ? uint32_t(0) - m : m);
 }
 
-// All pairs of edge values (full) or every 17th (the subset), 32 or 16
+// All pairs of edge values (full) or every 29th (the subset), 32 or 16
 // bits.
 template <typename V>
 void edgePairs(bool full, bool sixteen, V& v) {
   const uint16_t n = sixteen ? kEdges16 : kEdges32;
-  const uint8_t step = full ? 1 : 17;
+  const uint8_t step = full ? 1 : 29;
   for (uint16_t i = 0; i < n; ++i) {
     const int32_t a = sixteen ? int32_t(edge16(i)) : edge32(i);
     for (uint16_t j = uint16_t(i % step); j < n; j = uint16_t(j + step)) {
@@ -1044,8 +1044,18 @@ template <typename V>
 void enumerateStructured(uint8_t routine, bool full, V& v) {
   visitWitnesses(routine, v);
   switch (routine) {
-    case kAsmMulQ16: case kAsmMulQ24: enumerateMul(full, v); break;
-    case kAsmDivQ16: case kAsmDivQ24: enumerateDiv(full, v); break;
+    case kAsmMulQ16: enumerateMul(full, v); break;
+    case kAsmDivQ16: enumerateDiv(full, v); break;
+    case kAsmMulQ24: case kAsmDivQ24:
+      // The C++ around the Q16.16 routines: the edge pairs reach all its
+      // classes; the full proof adds the Q16.16 routines' structured sets.
+      if (full) {
+        if (routine == kAsmMulQ24) enumerateMul(true, v);
+        else enumerateDiv(true, v);
+      } else {
+        edgePairs(false, false, v);
+      }
+      break;
     case kAsmSqrtQ16: case kAsmSqrtQ24: enumerateSqrt(full, v); break;
     case kAsmSqrtQ8:
       // Every 16-bit argument, negative ones too (the subset: every 7th).
@@ -1155,8 +1165,9 @@ inline void randomInput(uint8_t routine, AsmRandom& random, int32_t* a,
 //   every d1 (VerifyHost tables checks all 32768);
 // 2 divide: of the d0 adjustments, "none in the first stage, two in the
 //   second" never occurs (VerifyHost tables checks all 2^31 divisors);
-// 3 divide: rounding cannot carry the quotient to 2^32 (that would need
-//   |a| 2^16 within |b| / 2 below a multiple of 2^32 |b| with |b| < 2^15);
+// 3 divide: rounding cannot carry the quotient to 2^32: that needs
+//   0 < 2^32 |b| - |a| 2^16 <= |b| / 2, a multiple of 2^16, so |b| >= 2^17
+//   and |a| > 2^33;
 // 4 square root: a correct prefix leaves a next digit of at most 255, so
 //   "one more" is never refused at 255;
 // 5 Q8.8 divide: |a 2^8 / b| <= 2^23 never saturates in Q16.16;
