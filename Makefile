@@ -13,7 +13,7 @@ JOBS ?= 2
 # The demo example (DEMO=examples/Name runs another one).
 DEMO ?= examples/BouncingBalls
 
-.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil clean
+.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil verify-asm clean
 
 help:
 	@sed -n '3,4p' Makefile | sed 's/^# *//'
@@ -69,6 +69,12 @@ bench-quick:
 hil:
 	@$(SCRIPTS)/setup-packages hil
 	@$(MAKE) --no-print-directory -C extras/hil
+
+# The AVR assembly against the portable reference, by input class, on simavr
+# (extras/verify-asm/README.md). Long: shards run JOBS at a time.
+verify-asm:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/verify-asm --jobs $(JOBS) $(VERIFY_ASM_FLAGS)
 
 clean:
 	rm -rf build

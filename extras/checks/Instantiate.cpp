@@ -179,6 +179,7 @@ template int32_t checkFixedFunctions<2, 30>();
 // template is instantiated for the scalars its sketches use. Not meant to
 // run. CycleCounter.hpp is AVR-only (Timer1): the avr and macros checks
 // compile it, with its interrupt handler.
+#include "TinyParticle/Testing/AsmClasses.hpp"
 #include "TinyParticle/Testing/BallChecks.hpp"
 #include "TinyParticle/Testing/CollisionChecks.hpp"
 #include "TinyParticle/Testing/ImmovableChecks.hpp"
@@ -247,4 +248,34 @@ long checkTestingHelpers() {
   r += long(testing::cycles::stop()) + testing::cycles::handlerCycles();
 #endif
   return r;
+}
+
+// The input classes of the assembly proof (AsmClasses.hpp): one shard of
+// each kind, classified and compared.
+struct CheckAsmVisit {
+  tinyparticle::testing::ClassCounts<uint8_t>* counts;
+  long sum;
+  void operator()(int32_t a, int32_t b) {
+    using namespace tinyparticle::testing;
+    classify(counts->routine(), a, b, *counts);
+    const AsmOutcome o = runAsmRoutine(counts->routine(), a, b, true);
+    sum += o.same() ? 0 : 1;
+  }
+};
+
+long checkAsmClasses() {
+  using namespace tinyparticle::testing;
+  static ClassCounts<uint8_t> counts(kAsmMulQ16);
+  CheckAsmVisit visit = {&counts, 0};
+  for (uint8_t r = 0; r < kAsmRoutineCount; ++r) {
+    counts.reset(r);
+    for (uint8_t kind = 0; kind < 3; ++kind) {
+      const AsmShard shard = {r, kind, 0, 1};
+      forEachShardInput(shard, visit);
+    }
+    enumerateStructured(r, false, visit);
+    visit.sum += isUnreachable(r, 0, 0) + routineIsExhaustive(r) +
+                 familyCount(r) + long(counts.count(0, 0));
+  }
+  return visit.sum;
 }

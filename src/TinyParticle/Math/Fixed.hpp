@@ -238,10 +238,7 @@ class Fixed {
     if (detail::addOverflows(sum, b)) return overflowAgainstSignOf(sum);
     return sum;
 #else
-    Raw sum = toSigned(URaw(URaw(a) + URaw(b)));
-    // Overflow only when a and b share a sign that the sum lacks.
-    if (((a ^ sum) & (b ^ sum)) < 0) return overflow(a < 0);
-    return sum;
+    return referenceAdd(a, b);
 #endif
   }
 
@@ -253,9 +250,7 @@ class Fixed {
     }
     return difference;
 #else
-    Raw difference = toSigned(URaw(URaw(a) - URaw(b)));
-    if (((a ^ b) & (a ^ difference)) < 0) return overflow(a < 0);
-    return difference;
+    return referenceSubtract(a, b);
 #endif
   }
 
@@ -275,6 +270,19 @@ class Fixed {
 
   // The portable C++ versions: exact, simple, slow on 8-bit CPUs. They are
   // the reference in the tests, on every target.
+  static Raw referenceAdd(Raw a, Raw b) {
+    Raw sum = toSigned(URaw(URaw(a) + URaw(b)));
+    // Overflow only when a and b share a sign that the sum lacks.
+    if (((a ^ sum) & (b ^ sum)) < 0) return overflow(a < 0);
+    return sum;
+  }
+
+  static Raw referenceSubtract(Raw a, Raw b) {
+    Raw difference = toSigned(URaw(URaw(a) - URaw(b)));
+    if (((a ^ b) & (a ^ difference)) < 0) return overflow(a < 0);
+    return difference;
+  }
+
   static Raw referenceMultiply(Raw a, Raw b) {
     UWide product = UWide(magnitude(a)) * magnitude(b);
     UWide rounded = (product + (UWide(1) << (FracBits - 1))) >> FracBits;

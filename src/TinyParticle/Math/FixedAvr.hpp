@@ -4,10 +4,15 @@
 //   every format;
 // - Q24.8 multiply, divide and square root and Q8.8 divide and square root
 //   through the Q16.16 routines (exact rescalings).
-// Multiply, divide and square root return exactly what the portable
-// reference in Fixed.hpp returns, flags included; atan2 follows the same
-// steps as the portable code to within its tolerance. The target tests
-// check both on the simulated ATmega328P.
+// Each routine returns exactly what the portable code returns, flags
+// included: multiply, divide and square root the reference* functions of
+// Fixed.hpp, atan2 atan2UnitsPortable in FixedMath.hpp (and the add and
+// subtract in Fixed.hpp referenceAdd and referenceSubtract). `make
+// verify-asm` proves it on the simulated ATmega328P, for every class of
+// input that each routine's code tells apart (table entries, shifts,
+// corrections, saturation edges, with +-3 neighbours) and 10^6 to 10^7
+// random inputs per routine: see extras/verify-asm/README.md and
+// results.csv. test/AsmClassesTest runs a subset of it in `make test`.
 //
 // The routines are out-of-line naked functions, so that the engine's many
 // multiplies share one copy of the code (a call costs a few cycles,
@@ -611,8 +616,13 @@ __attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
 // each further byte is estimated from the remainder with a reciprocal
 // (kRecip) and fixed with at most one step, the remainder being updated
 // exactly. Small arguments (x < 0.25) need two root bytes, not three.
-// Checked exhaustively against the reference, in a model of these steps,
-// over all 2^31 arguments.
+// Proven equal to referenceSquareRoot on the simulated Nano by `make
+// verify-asm` (e0 = 0 and e0 = 4): every argument below 2^22, each kSqrt
+// entry's first and last argument at each normalization shift, each first
+// byte's remainder edges (R1 = 0, 255, 256, 2a), each 16-bit root's square,
+// all with +-3 neighbours, plus random arguments; every branch below is
+// counted (extras/verify-asm/classes.csv). Since the normalized top byte is
+// at least 64, a >= 128 always: the "a < 128" paths are never taken.
 // ---------------------------------------------------------------------------
 __attribute__((naked, noinline)) inline int32_t avrSquareRoot(int32_t,
                                                              uint8_t) {
@@ -958,8 +968,9 @@ __attribute__((naked, noinline)) inline int32_t avrSquareRoot(int32_t,
 
 // ---------------------------------------------------------------------------
 // atan2(y, x) in units of 2^-16 rad, in [-pi, pi], atan2(0, 0) = 0: the
-// computation of FixedMath.hpp's portable atan2Units in assembly, with the
-// normalizing shifts done as multiplies and no 32-bit loops.
+// steps of FixedMath.hpp's atan2UnitsPortable in assembly (the same result
+// bit for bit, proven by `make verify-asm`), with the normalizing shifts
+// done as multiplies and no 32-bit loops.
 // ---------------------------------------------------------------------------
 __attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
                                                                int32_t) {

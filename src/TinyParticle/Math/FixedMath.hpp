@@ -78,8 +78,9 @@ inline Fixed<I, F> fixedFromUnits16(int32_t v) {
 // from two 8 x 8 products: single MUL instructions on AVR, where a
 // 16 x 16 multiply is a library call.
 inline uint16_t scaleByFraction8(uint16_t rise, uint8_t fraction) {
-  const uint16_t low = uint16_t(uint8_t(rise) * fraction);
-  const uint16_t high = uint16_t(uint8_t(rise >> 8) * fraction);
+  // (unsigned products: 255 * 255 does not fit a 16-bit int)
+  const uint16_t low = uint16_t(uint16_t(uint8_t(rise)) * fraction);
+  const uint16_t high = uint16_t(uint16_t(uint8_t(rise >> 8)) * fraction);
   return uint16_t(high + ((low + 128u) >> 8));
 }
 
@@ -167,116 +168,106 @@ inline uint32_t turns24Of(Fixed<I, F> x) {
 
 // ---- atan2 -----------------------------------------------------------------
 
-// floor((2^32 - 1) / d) - 2^16 for d in [2^15, 2^16), within about 2:
-// the table at every 256th d, interpolated.
-template <typename Unused = void>
-inline uint16_t reciprocal16(uint16_t d) {
-  const uint8_t i = uint8_t((d >> 8) - 128u);
-  const uint16_t r0 = platform::readFlashU16(&TrigTables<Unused>::kRecip[i]);
-  const uint16_t r1 = platform::readFlashU16(&TrigTables<Unused>::kRecip[i + 1]);
-  return uint16_t(r0 - scaleByFraction8(uint16_t(r0 - r1), uint8_t(d)));
-}
-
-// atan(t / 65536) in units of 2^-16 rad, t in [0, 65536].
-template <typename Unused = void>
-inline uint16_t atanUnits(uint32_t t) {
-  if (t >= 65536u) return platform::readFlashU16(&TrigTables<Unused>::kAtan[128]);
-  const uint16_t t16 = uint16_t(t);
-  const uint8_t i = uint8_t(t16 >> 9);
-  const uint16_t y0 = platform::readFlashU16(&TrigTables<Unused>::kAtan[i]);
-  const uint16_t y1 = platform::readFlashU16(&TrigTables<Unused>::kAtan[i + 1]);
-  const uint16_t rise = uint16_t(y1 - y0);
-  // The fraction has 9 bits: rise * (f >> 1) / 2^8, plus rise / 2^9 for
-  // the low bit.
-  uint16_t step = scaleByFraction8(rise, uint8_t(t16 >> 1));
-  if (t16 & 1u) step = uint16_t(step + ((rise + 256u) >> 9));
-  return uint16_t(y0 + step);
-}
-
 // round(pi / 2 * 2^16) and round(pi * 2^16).
 const uint32_t kHalfPiUnits = 102944u;
 const uint32_t kPiUnits = 205887u;
 
-// (w * m + 128) >> 8 for a 24-bit w = (w2, w1, w0) and a power of two m
-// with w2 * m < 256, from three 8 x 8 products; at most 2^16.
-inline uint32_t scaleWindow(uint8_t w2, uint8_t w1, uint8_t w0, uint8_t m) {
-  return (uint32_t(uint8_t(w2 * m)) << 8) +
-         uint16_t(uint16_t(w1 * m) + ((uint16_t(w0 * m) + 128u) >> 8));
+// x * m / 256, truncated, for a window of three bytes x = (x2, x1, x0) and
+// a power of two m with x2 * m < 256: three 8 x 8 products.
+inline uint32_t scaleWindow(uint8_t x2, uint8_t x1, uint8_t x0, uint8_t m) {
+  return (uint32_t(uint8_t(x2 * m)) << 8) + uint16_t(x1 * m) +
+         (uint16_t(x0 * m) >> 8);
 }
 
-// Brings big (> 0) to [2^15, 2^16) and small (<= big) along with it by the
-// same power of two, rounded: a window of three bytes whose top byte is
-// the top nonzero byte of big, times m = 2^(leading zeros of that byte),
-// divided by 256. No loop over 32-bit shifts; byte tests and 8 x 8
-// products only (this runs in every atan2).
-struct SixteenBits {
-  uint16_t big, small;
-};
-
-TINYPARTICLE_ALWAYS_INLINE SixteenBits toSixteenBits(uint32_t big,
-                                                     uint32_t small) {
-  uint8_t b2, b1, b0, s2, s1, s0;
-  const uint8_t big3 = uint8_t(big >> 24), big2 = uint8_t(big >> 16);
-  const uint8_t big1 = uint8_t(big >> 8);
-  if (big3 != 0) {
-    b2 = big3; b1 = big2; b0 = big1;
-    s2 = uint8_t(small >> 24); s1 = uint8_t(small >> 16); s0 = uint8_t(small >> 8);
-  } else if (big2 != 0) {
-    b2 = big2; b1 = big1; b0 = uint8_t(big);
-    s2 = uint8_t(small >> 16); s1 = uint8_t(small >> 8); s0 = uint8_t(small);
-  } else if (big1 != 0) {
-    b2 = big1; b1 = uint8_t(big); b0 = 0;
-    s2 = uint8_t(small >> 8); s1 = uint8_t(small); s0 = 0;
-  } else {
-    b2 = uint8_t(big); b1 = 0; b0 = 0;
-    s2 = uint8_t(small); s1 = 0; s0 = 0;
-  }
+// atan2(y, x) in units of 2^-16 rad, in [-pi, pi], atan2(0, 0) = 0 (y and x
+// are raw values of any format, widened to 32 bits). These are exactly the
+// steps of the AVR assembly (avrAtan2Units in FixedAvr.hpp), so both give
+// the same result bit for bit on every input (`make verify-asm` proves it
+// on the simulated Nano):
+// 1. big = the larger magnitude (|y| when they are equal), small = the
+//    other; a window of three bytes from big's top nonzero byte, scaled by
+//    m = 2^(leading zeros of that byte) and truncated to 16 bits: big16 in
+//    [2^15, 2^16), small16 <= big16.
+// 2. r ~ 2^32 / big16 - 2^16 from kRecip, interpolated (truncated).
+// 3. t = small16 + (small16 r + 2^15 - (low bytes' product)) >> 16, the
+//    ratio small / big in units of 2^-16 (the product of the two low bytes
+//    is left out, as in the assembly: at most one unit less).
+// 4. atan from kAtan: entry t >> 9, fraction bits 1..8 of t, rounded;
+//    t >= 2^16 gives pi / 4.
+// 5. pi / 2 - that when big was |y|; pi - that when x < 0; negated when
+//    y < 0.
+// Each truncation moves the result by at most a unit or two of 2^-16 rad
+// (FixedTrigTest holds the total within 1e-4 rad).
+// (U only delays the instantiation of the tables; any type will do.)
+template <typename U>
+inline int32_t atan2UnitsPortable(int32_t y, int32_t x) {
+  typedef typename TablesFor<U>::Type Tables;
+  const uint32_t ay = y < 0 ? uint32_t(0) - uint32_t(y) : uint32_t(y);
+  const uint32_t ax = x < 0 ? uint32_t(0) - uint32_t(x) : uint32_t(x);
+  const bool steep = ay >= ax;
+  const uint32_t big = steep ? ay : ax;
+  const uint32_t small = steep ? ax : ay;
+  if (big == 0) return 0;
+  // 1. The window: the top nonzero byte of big and the two below it.
+  uint8_t shift = 24;
+  while ((big >> shift) == 0) shift = uint8_t(shift - 8);
+  const uint8_t b2 = uint8_t(big >> shift);
+  const uint8_t b1 = shift >= 8 ? uint8_t(big >> (shift - 8)) : 0;
+  const uint8_t b0 = shift >= 16 ? uint8_t(big >> (shift - 16)) : 0;
+  const uint8_t s2 = uint8_t(small >> shift);
+  const uint8_t s1 = shift >= 8 ? uint8_t(small >> (shift - 8)) : 0;
+  const uint8_t s0 = shift >= 16 ? uint8_t(small >> (shift - 16)) : 0;
   uint8_t m = 1;
   for (uint8_t top = b2; !(top & 0x80u); top = uint8_t(top << 1)) {
     m = uint8_t(m << 1);
   }
-  SixteenBits r;
-  // (w * m + 128) >> 8 with w = (w2, w1, w0): w2 * m < 256 by the choice
-  // of m. Rounding may reach 2^16; then one less.
-  const uint16_t bLow = uint16_t(uint16_t(b1 * m) + ((uint16_t(b0 * m) + 128u) >> 8));
-  const uint16_t bHigh = uint16_t(uint8_t(b2 * m) << 8);
-  r.big = uint16_t(bHigh + bLow);
-  if (r.big < bHigh) r.big = 0xffffu;
-  const uint16_t sLow = uint16_t(uint16_t(s1 * m) + ((uint16_t(s0 * m) + 128u) >> 8));
-  const uint16_t sHigh = uint16_t(uint8_t(s2 * m) << 8);
-  r.small = uint16_t(sHigh + sLow);
-  if (r.small < sHigh || r.small > r.big) r.small = r.big;
-  return r;
-}
-
-// The angle of (x, y), x, y >= 0 and not both zero, in units of 2^-16 rad,
-// in [0, pi / 2]: the larger of the two brought to 16 bits, the ratio from a
-// reciprocal and one multiply, atan from the table.
-template <typename U>
-inline uint32_t firstQuadrantAngle(U x, U y) {
-  const bool steep = y > x;
-  const SixteenBits n = toSixteenBits(steep ? y : x, steep ? x : y);
-  // small / big = small * (2^16 + r) / 2^32 with r = reciprocal16(big).
-  const uint16_t r = reciprocal16(n.big);
-  const uint32_t t = n.small + ((uint32_t(n.small) * r + 0x8000u) >> 16);
-  const uint16_t a = atanUnits(t);
-  return steep ? kHalfPiUnits - a : a;
+  uint32_t big16 = scaleWindow(b2, b1, b0, m);
+  if (big16 > 0xffffu) big16 = 0xffffu;
+  uint32_t small16 = scaleWindow(s2, s1, s0, m);
+  if (small16 > big16) small16 = big16;
+  // 2. The reciprocal, interpolated between two entries of kRecip.
+  const uint8_t i = uint8_t((big16 >> 8) & 0x7fu);
+  const uint16_t r0 = platform::readFlashU16(&Tables::kRecip[i]);
+  const uint16_t r1 =
+      platform::readFlashU16(&Tables::kRecip[i + 1]);
+  const uint16_t fall = uint16_t(r0 - r1);
+  const uint16_t r =
+      uint16_t(r0 - uint16_t((uint32_t(fall) * uint8_t(big16)) >> 8));
+  // 3. The ratio.
+  const uint8_t sLow = uint8_t(small16), sHigh = uint8_t(small16 >> 8);
+  const uint8_t rLow = uint8_t(r), rHigh = uint8_t(r >> 8);
+  const uint32_t sum = 0x80u + uint32_t(sLow) * rHigh +
+                       uint32_t(sHigh) * rLow +
+                       (uint32_t(sHigh) * rHigh << 8);
+  const uint32_t t = small16 + (sum >> 8);
+  // 4. atan(t / 2^16).
+  uint32_t a;
+  if (t > 0xffffu) {
+    a = platform::readFlashU16(&Tables::kAtan[128]);
+  } else {
+    const uint8_t j = uint8_t(t >> 9);
+    const uint16_t y0 = platform::readFlashU16(&Tables::kAtan[j]);
+    const uint16_t y1 =
+        platform::readFlashU16(&Tables::kAtan[j + 1]);
+    a = uint16_t(y0 + scaleByFraction8(uint16_t(y1 - y0), uint8_t(t >> 1)));
+  }
+  // 5. The quadrant.
+  if (steep) a = kHalfPiUnits - a;
+  if (x < 0) a = kPiUnits - a;
+  return y < 0 ? -int32_t(a) : int32_t(a);
 }
 
 // atan2 in units of 2^-16 rad, in [-pi, pi]. atan2(0, 0) = 0.
 template <typename Raw, typename URaw>
 inline int32_t atan2Units(Raw y, Raw x, URaw ay, URaw ax) {
-#if TINYPARTICLE_AVR_ASM_MUL
   (void)ay;
   (void)ax;
+#if TINYPARTICLE_AVR_ASM_MUL
   typedef typename TablesFor<Raw>::Type Tables;
   asm volatile("" : : "m"(Tables::kRecip[0]), "m"(Tables::kAtan[0]));
   return avrAtan2Units(y, x);  // the same steps in assembly
 #else
-  if (ax == 0 && ay == 0) return 0;
-  uint32_t a = firstQuadrantAngle<URaw>(ax, ay);
-  if (x < 0) a = kPiUnits - a;
-  return y < 0 ? -int32_t(a) : int32_t(a);
+  return atan2UnitsPortable<Raw>(int32_t(y), int32_t(x));
 #endif
 }
 
