@@ -49,6 +49,7 @@ enum : uint8_t {
   kStaleHandle = 16,     // a stale or invalid handle was passed in
   kBadArgument = 32,     // e.g. a zero plane normal or a negative mass
   kRodsUnsatisfied = 64, // rods that cannot all keep their lengths (a loop)
+  kNonFinite = 128,      // a float state became inf or NaN (see World::step)
 };
 }
 
