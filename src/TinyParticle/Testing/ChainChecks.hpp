@@ -50,7 +50,7 @@ struct ChainChecks {
   // N beads (at most kMaxBeads), `steps` steps of 1/rate s.
   static ChainResult run(uint8_t N, uint16_t rate, uint16_t steps) {
     static W w;  // (static: a world on the Nano's stack is too large)
-    w = W();
+    w.clear();  // in place: w = W() would build a second world on the stack
     ParticleId previous = w.addFixedParticle(Vec2<S>(S(), S()));
     for (uint8_t i = 1; i <= N; ++i) {
       ParticleId bead =
