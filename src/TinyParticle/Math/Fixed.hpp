@@ -22,7 +22,7 @@
 //   (on AVR a double is a float anyway), then that float is rounded to the
 //   format exactly (ties away from zero), with integer steps only. So
 //   Q16_16(12345.6789) is 12345.6787109375 (raw 809086400) on the PC as on
-//   the Nano, not the 13 units nearer that a 64-bit double would give. A
+//   the Nano, not the raw 809086412 that a 64-bit double would give. A
 //   value with more than 24 significant bits needs fromRaw() or an integer.
 //
 // Speed: multiply, divide and square root go through detail::FixedFast,
