@@ -11,10 +11,11 @@ using aunit::TestRunner;
 
 typedef Q16_16 S;
 typedef World<S, 2, 4, 1, 5, 2> CaseWorld;
-// One world for all cases, emptied by each (seven would not fit the RAM).
+// One world for all cases, emptied by each (seven would not fit the RAM),
+// in place (gWorld = CaseWorld() would build a second one on the stack).
 CaseWorld gWorld;
 CaseWorld& freshWorld() {
-  gWorld = CaseWorld();
+  gWorld.clear();
   return gWorld;
 }
 

@@ -21,11 +21,16 @@
 // since those eigenvalues lie inside the unit circle the step is stable for
 // any k. Undamped, this is the classic A = -4 sin^2(w dt / 2) / dt^2, B = 0.
 //
-// The gains are computed in double (float on AVR) by scaling and squaring on
-// the remainder exp(X) - I - X, so no term suffers cancellation even for a
-// tiny k dt^2. They are only right for the dt given when adding the spring.
-// In Q16.16 a gain saturates beyond 32767 (k/m above about 30000 N/m/kg at
-// dt = 1/256): the spring then stays stable but is softer.
+// The gains are computed in float on every platform (every operation a
+// single float operation, no double literal), so that a world gets the same
+// bits on the PC as on the Nano, by scaling and squaring on the remainder
+// exp(X) - I - X, so no term suffers cancellation even for a tiny k dt^2.
+// They are only right for the dt given when adding the spring.
+// The position gain is about -k/m (exactly -4 sin^2(w dt / 2) / dt^2
+// undamped): a spring whose gains do not fit the scalar (in Q16.16 k/m
+// beyond about 32000 N/m/kg at dt = 1/256 s, or a k that does not fit
+// itself) is refused by World::addStiffSpring with WorldError::kBadArgument
+// rather than run softer than asked.
 #pragma once
 
 #include <stdint.h>
@@ -45,58 +50,58 @@ namespace detail {
 
 // Gains A and B for x'' = -w2 x - c x' and step h (see above). Setup-time
 // code: about two hundred float operations.
-inline void stiffSpringGains(double w2, double c, double h, double* gainA,
-                             double* gainB) {
+inline void stiffSpringGains(float w2, float c, float h, float* gainA,
+                             float* gainB) {
   // X = h J / 2^s with J = [[0, 1], [-w2, -c]], small enough for Taylor.
-  double scale = h;
+  float scale = h;
   uint8_t squarings = 0;
-  double norm = h * (1.0 + (w2 < 0 ? -w2 : w2) + (c < 0 ? -c : c));
-  while (norm > 0.5 && squarings < 60) {
-    norm *= 0.5;
-    scale *= 0.5;
+  float norm = h * (1.0f + (w2 < 0 ? -w2 : w2) + (c < 0 ? -c : c));
+  while (norm > 0.5f && squarings < 60) {
+    norm *= 0.5f;
+    scale *= 0.5f;
     ++squarings;
   }
-  double x[4] = {0.0, scale, -w2 * scale, -c * scale};
+  float x[4] = {0.0f, scale, -w2 * scale, -c * scale};
   // r = exp(X) - I - X = X^2/2! + X^3/3! + ...
-  double term[4] = {x[0], x[1], x[2], x[3]};
-  double r[4] = {0.0, 0.0, 0.0, 0.0};
+  float term[4] = {x[0], x[1], x[2], x[3]};
+  float r[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   for (uint8_t n = 2; n <= 14; ++n) {
-    double t0 = (term[0] * x[0] + term[1] * x[2]) / n;
-    double t1 = (term[0] * x[1] + term[1] * x[3]) / n;
-    double t2 = (term[2] * x[0] + term[3] * x[2]) / n;
-    double t3 = (term[2] * x[1] + term[3] * x[3]) / n;
+    float t0 = (term[0] * x[0] + term[1] * x[2]) / n;
+    float t1 = (term[0] * x[1] + term[1] * x[3]) / n;
+    float t2 = (term[2] * x[0] + term[3] * x[2]) / n;
+    float t3 = (term[2] * x[1] + term[3] * x[3]) / n;
     term[0] = t0; term[1] = t1; term[2] = t2; term[3] = t3;
     for (uint8_t i = 0; i < 4; ++i) r[i] += term[i];
   }
   // exp(2Y) - I = 2N + N^2 with N = exp(Y) - I, so the remainder doubles
   // as r(2Y) = 2 r(Y) + N^2 while X doubles.
   for (uint8_t i = 0; i < squarings; ++i) {
-    double n[4] = {x[0] + r[0], x[1] + r[1], x[2] + r[2], x[3] + r[3]};
-    double q0 = n[0] * n[0] + n[1] * n[2];
-    double q1 = n[0] * n[1] + n[1] * n[3];
-    double q2 = n[2] * n[0] + n[3] * n[2];
-    double q3 = n[2] * n[1] + n[3] * n[3];
-    r[0] = 2.0 * r[0] + q0;
-    r[1] = 2.0 * r[1] + q1;
-    r[2] = 2.0 * r[2] + q2;
-    r[3] = 2.0 * r[3] + q3;
-    for (uint8_t j = 0; j < 4; ++j) x[j] *= 2.0;
+    float n[4] = {x[0] + r[0], x[1] + r[1], x[2] + r[2], x[3] + r[3]};
+    float q0 = n[0] * n[0] + n[1] * n[2];
+    float q1 = n[0] * n[1] + n[1] * n[3];
+    float q2 = n[2] * n[0] + n[3] * n[2];
+    float q3 = n[2] * n[1] + n[3] * n[3];
+    r[0] = 2.0f * r[0] + q0;
+    r[1] = 2.0f * r[1] + q1;
+    r[2] = 2.0f * r[2] + q2;
+    r[3] = 2.0f * r[3] + q3;
+    for (uint8_t j = 0; j < 4; ++j) x[j] *= 2.0f;
   }
   // M = exp(h J) = I + h J + r. Its determinant is e^y with y = -c h; its
   // trace is 2 + y + r11 + r22. e2 = e^y - 1 - y, by series while small.
-  const double y = -c * h;
-  double e2;
-  if (y > -0.5) {
-    e2 = 0.0;
-    double power = y;
+  const float y = -c * h;
+  float e2;
+  if (y > -0.5f) {
+    e2 = 0.0f;
+    float power = y;
     for (uint8_t n = 2; n <= 16; ++n) {
       power = power * y / n;
       e2 += power;
     }
   } else {
-    const double m11 = 1.0 + r[0], m12 = h + r[1];
-    const double m21 = -w2 * h + r[2], m22 = 1.0 + y + r[3];
-    e2 = (m11 * m22 - m12 * m21) - 1.0 - y;
+    const float m11 = 1.0f + r[0], m12 = h + r[1];
+    const float m21 = -w2 * h + r[2], m22 = 1.0f + y + r[3];
+    e2 = (m11 * m22 - m12 * m21) - 1.0f - y;
   }
   // One step maps (x, v) by [[1 + A h^2, h + B h^2], [A h, 1 + B h]], whose
   // determinant is 1 + B h and trace 2 + A h^2 + B h: match them to M's.

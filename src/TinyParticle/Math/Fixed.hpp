@@ -14,11 +14,16 @@
 // - x / 0 returns max() or lowest() with x's sign (0 / 0 returns 0) and
 //   raises MathError::kDivideByZero.
 // - Construction from an integer or a decimal literal is constexpr, so
-//   Q16_16(0.15) costs nothing at run time. Out-of-range values saturate
-//   (without raising the flag: a constant is checked by its author).
-//   On AVR a double is a float (24-bit mantissa), so a literal with more
-//   significant digits than that is rounded before it reaches Fixed; use
-//   fromRaw() when the last bit matters.
+//   Q16_16(0.15) costs nothing at run time. A value out of range (or a
+//   NaN) saturates (NaN gives 0) and raises MathError::kOverflow at run
+//   time; in a constant expression (constexpr Q16_16 k(1e5);) the same
+//   conversion does not compile (the error names conversionOutOfRange).
+// - The same bits on every platform: a double is first rounded to float
+//   (on AVR a double is a float anyway), then that float is rounded to the
+//   format exactly (ties away from zero), with integer steps only. So
+//   Q16_16(12345.6789) is 12345.6787109375 (raw 809086400) on the PC as on
+//   the Nano, not the raw 809086412 that a 64-bit double would give. A
+//   value with more than 24 significant bits needs fromRaw() or an integer.
 //
 // Speed: multiply, divide and square root go through detail::FixedFast,
 // which uses hand-written AVR code where TINYPARTICLE_AVR_ASM is 1 (see
@@ -52,6 +57,15 @@
 #define TINYPARTICLE_AVR_ASM_MUL 1
 #else
 #define TINYPARTICLE_AVR_ASM_MUL 0
+#endif
+
+// Whether the compiler knows a value (after inlining): constants take the
+// inlined path that folds, other values a call. Without the builtin every
+// value takes the inlined path.
+#if defined(__GNUC__)
+#define TINYPARTICLE_IS_CONSTANT(x) __builtin_constant_p(x)
+#else
+#define TINYPARTICLE_IS_CONSTANT(x) true
 #endif
 
 // __builtin_add_overflow and friends: GCC 5 and later, clang.
@@ -187,7 +201,11 @@ class Fixed {
   constexpr explicit Fixed(unsigned v) : mRaw(fromUnsigned(v)) {}
   constexpr explicit Fixed(unsigned long v) : mRaw(fromUnsigned(v)) {}
   constexpr explicit Fixed(unsigned long long v) : mRaw(fromUnsigned(v)) {}
-  constexpr explicit Fixed(double v) : mRaw(fromDouble(v)) {}
+  // Inlined, so that a constant folds at every call site, also at -Os; a
+  // value known only at run time calls the conversion out of line.
+  TINYPARTICLE_ALWAYS_INLINE constexpr explicit Fixed(double v)
+      : mRaw(TINYPARTICLE_IS_CONSTANT(v) ? fromDouble(v)
+                                         : fromDoubleOutOfLine(v)) {}
 
   // The value whose representation is `raw`, i.e. raw / 2^FracBits.
   static constexpr Fixed fromRaw(Raw raw) { return Fixed(raw, RawTag()); }
@@ -355,6 +373,7 @@ class Fixed {
   constexpr Fixed(Raw raw, RawTag) : mRaw(raw) {}
 
   static constexpr double kScale = double(uint32_t(1) << FracBits);
+  static constexpr float kScaleFloat = float(uint32_t(1) << FracBits);
   // long is 32 bits on AVR, so these compares stay cheap there.
   static constexpr long kIntMax = long(kRawMax >> FracBits);
   static constexpr long kIntMin = -kIntMax - 1;
@@ -368,21 +387,59 @@ class Fixed {
     return 0;
   }
 
+  // Out of range: the saturated value (0 for a NaN) and the flag. Not
+  // constexpr, so a conversion that gets here in a constant expression
+  // fails to compile.
+  static Raw conversionOutOfRange(Raw saturated) {
+    detail::raiseMathError(MathError::kOverflow);
+    return saturated;
+  }
+
   // In range, v * 2^FracBits fits Raw, so the product cannot overflow.
   template <typename T>
   static constexpr Raw fromSigned(T v) {
-    return v > kIntMax ? kRawMax
-                       : (v < kIntMin ? kRawMin : Raw(Raw(v) * kRawOne));
+    return v > kIntMax ? conversionOutOfRange(kRawMax)
+         : v < kIntMin ? conversionOutOfRange(kRawMin)
+                       : Raw(Raw(v) * kRawOne);
   }
   template <typename T>
   static constexpr Raw fromUnsigned(T v) {
-    return v > (unsigned long)kIntMax ? kRawMax : Raw(Raw(v) * kRawOne);
+    return v > (unsigned long)kIntMax ? conversionOutOfRange(kRawMax)
+                                      : Raw(Raw(v) * kRawOne);
   }
-  static constexpr Raw fromDouble(double v) {
-    return v != v ? Raw(0)  // NaN
-         : v * kScale + 0.5 >= double(kRawMax) + 1.0 ? kRawMax
-         : v * kScale - 0.5 <= double(kRawMin) - 1.0 ? kRawMin
-         : Raw(v >= 0 ? v * kScale + 0.5 : v * kScale - 0.5);
+  TINYPARTICLE_NOINLINE static Raw fromDoubleOutOfLine(double v) {
+    return fromDouble(v);
+  }
+  // Through float on every platform (see the top of the file). Beyond
+  // 2^32 the double is out of every format, and its conversion to float
+  // could overflow, so it is caught first.
+  TINYPARTICLE_ALWAYS_INLINE static constexpr Raw fromDouble(double v) {
+    return v != v ? conversionOutOfRange(Raw(0))
+         : v >= 4294967296.0 ? conversionOutOfRange(kRawMax)
+         : v <= -4294967296.0 ? conversionOutOfRange(kRawMin)
+         : fromFloat(float(v));
+  }
+  // |f| * 2^FracBits is exact (a power of two), and so are its whole part
+  // (a uint32_t below 2^32) and the fraction left: the rounding is exact
+  // and the same wherever it is done.
+  TINYPARTICLE_ALWAYS_INLINE static constexpr Raw fromFloat(float f) {
+    return f < 0.0f ? fromScaledMagnitude(-f * kScaleFloat, true)
+                    : fromScaledMagnitude(f * kScaleFloat, false);
+  }
+  TINYPARTICLE_ALWAYS_INLINE static constexpr Raw fromScaledMagnitude(float m, bool negative) {
+    return m >= 4294967296.0f
+               ? conversionOutOfRange(negative ? kRawMin : kRawMax)
+               : fromRoundedMagnitude(
+                     uint32_t(m) + (m - float(uint32_t(m)) >= 0.5f ? 1u : 0u),
+                     negative);
+  }
+  TINYPARTICLE_ALWAYS_INLINE static constexpr Raw fromRoundedMagnitude(uint32_t m, bool negative) {
+    return negative
+               ? (m > uint32_t(kRawMax) + 1u
+                      ? conversionOutOfRange(kRawMin)
+                      : toSigned(URaw(URaw(0) - URaw(m))))
+               : (m > uint32_t(kRawMax) ? conversionOutOfRange(kRawMax)
+                                        : Raw(m));
   }
 
   // round(pi * 2^30), exact in integers, so pi() is right on AVR too where
@@ -401,6 +458,8 @@ class Fixed {
 
 template <uint8_t I, uint8_t F>
 constexpr double Fixed<I, F>::kScale;
+template <uint8_t I, uint8_t F>
+constexpr float Fixed<I, F>::kScaleFloat;
 
 namespace detail {
 // Portable: the reference code is the fast path.

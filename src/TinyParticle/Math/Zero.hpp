@@ -1,5 +1,5 @@
 // detail::isZero(x), isNegative(x), isPositive(x): x == 0, x < 0, x > 0 for
-// any scalar, by the cheapest test. A float compare is a library call on
+// any scalar, by the cheapest test; isNonFinite(x or vector) below. A float compare is a library call on
 // AVR (about 50 cycles, against 130 for a multiply); a look at the bits
 // takes a few. The engine skips multiplies by zero components (gravity
 // along one axis, a particle at rest), which pays only with a cheap test,
@@ -63,6 +63,30 @@ inline bool isNegative(Float x) {
 inline bool isPositive(Float x) {
   const uint32_t bits = floatBits(x);
   return (bits & 0x80000000ul) == 0 && bits != 0 && bits <= 0x7F800000ul;
+}
+
+// isNonFinite(v): a component of v is infinite or NaN. Only a float can
+// be: for fixed point it is false at compile time, so the checks that use
+// it cost nothing there. For a float it is a test of the exponent's bits
+// (all ones), a few cycles a component.
+template <typename S>
+inline bool isNonFinite(S x) {
+  return !(x - x == S());  // inf - inf and NaN - NaN are NaN
+}
+template <uint8_t I, uint8_t F>
+constexpr bool isNonFinite(Fixed<I, F>) {
+  return false;
+}
+inline bool isNonFinite(Float x) {
+  return (floatBits(x) & 0x7F800000ul) == 0x7F800000ul;
+}
+template <typename S>
+inline bool isNonFinite(const Vec<S, 2>& v) {
+  return isNonFinite(v.x) | isNonFinite(v.y);
+}
+template <typename S>
+inline bool isNonFinite(const Vec<S, 3>& v) {
+  return isNonFinite(v.x) | isNonFinite(v.y) | isNonFinite(v.z);
 }
 
 // d -= v, skipping zero components (a pivot at the origin): for float a

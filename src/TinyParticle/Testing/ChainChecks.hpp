@@ -50,7 +50,7 @@ struct ChainChecks {
   // N beads (at most kMaxBeads), `steps` steps of 1/rate s.
   static ChainResult run(uint8_t N, uint16_t rate, uint16_t steps) {
     static W w;  // (static: a world on the Nano's stack is too large)
-    w = W();
+    w.clear();  // in place: w = W() would build a second world on the stack
     buildChain(w, N);  // Scenes/Chain.hpp, in this one world type
     const float fall = 0.05f * 9.81f * 0.125f * N * (N + 1) / 2;
     const float start = energy(w, N);

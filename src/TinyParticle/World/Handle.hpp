@@ -47,8 +47,9 @@ enum : uint8_t {
   kConstraintsFull = 4,  // a constraint on a full pool
   kContactsDropped = 8,  // the contact pool overflowed during a step
   kStaleHandle = 16,     // a stale or invalid handle was passed in
-  kBadArgument = 32,     // e.g. a zero plane normal or a negative mass
+  kBadArgument = 32,     // e.g. a zero plane normal, a negative mass, dt <= 0
   kRodsUnsatisfied = 64, // rods that cannot all keep their lengths (a loop)
+  kNonFinite = 128,      // a float state became inf or NaN (see World::step)
 };
 }
 

@@ -63,10 +63,13 @@ struct Particle {
   // Sets the damping rate in 1/s (0 to 255.99). Velocity then decays like
   // exp(-rate * t) for small rate * dt.
   void setDampingRate(S rate) {
+    // (No S(65535): it does not fit every format, and a conversion out of
+    // range raises MathError::kOverflow.)
     S scaled = rate * S(256);
+    const int32_t n = scaled.toInt();
     damping = scaled <= S() ? uint16_t(0)
-            : scaled >= S(65535) ? uint16_t(65535)
-            : uint16_t(scaled.toInt());
+            : n >= 65535 || scaled == S::largest() ? uint16_t(65535)
+            : uint16_t(n);
   }
   S dampingRate() const { return S(long(damping)) * S(1.0 / 256); }
 

@@ -14,12 +14,18 @@
 //  2. semi-implicit Euler: v += a dt (plus the uniform g dt, computed once),
 //     damping (one multiply, skipped when 0), x += v dt, for every particle
 //     that is in use and movable. When dt is a power of two (1/256 s...),
-//     the multiplies by dt are rounding shifts (Math/Scaler.hpp);
+//     the multiplies by dt are rounding shifts (Math/Scaler.hpp). For a
+//     float scalar the new velocity and position are checked here, the
+//     one place that touches them all: one that is inf or NaN stops the
+//     particle and raises WorldError::kNonFinite (see nonFinite());
 //  3. contact generators (rods, cables, planes, collisions) fill the contact
 //     pool;
 //  4. the resolver (Contacts/Resolver.hpp) resolves them;
 //  5. the accumulators are cleared, so forces applied between steps act in
 //     the next step.
+//
+// A dt <= 0 (or NaN) is refused: nothing moves, kBadArgument is raised.
+// clear() empties a world in place.
 //
 // Conventions: SI units; y points up and gravity is (0, -9.81[, 0]) m/s^2.
 #pragma once
@@ -261,7 +267,8 @@ class World
   // Buoyancy under a water surface at height `surface` (m, along y), for
   // bodies of half-height maxDepth (m, > 0) and the given volume (m^3), in a
   // liquid of the given density (kg/m^3; water 1000). For every particle or
-  // one. The full force density * volume * 9.81 is computed once, in float.
+  // one. The full force density * volume * 9.81 is computed once, in float
+  // (on every platform).
   ForceId addBuoyancy(S surface, S maxDepth, S volume, S density) {
     return addBuoyancyFor(kAllIndex, surface, maxDepth, volume, density);
   }
@@ -272,23 +279,38 @@ class World
   }
 
   // A stiff spring (Forces/StiffSpring.hpp) from a particle to an anchor:
-  // stiffness k (N/m) and damping (N s/m) with the particle's present mass,
-  // exact for steps of `dt`. Its two gains are computed once, in float.
+  // stiffness k (N/m, >= 0) and damping (N s/m, >= 0) with the particle's
+  // present mass, exact for steps of `dt` (> 0). Its two gains are computed
+  // once, in float on every platform. Refused (kBadArgument, invalid id)
+  // when an argument is out of range, when k or damping did not fit the
+  // scalar (it arrives saturated: S::largest()), or when a gain would not
+  // fit it (in Q16.16, k/m beyond about 32000 at dt = 1/256 s).
   ForceId addStiffSpring(ParticleId target, const Vec& anchor, S k, S damping,
                          S dt) {
     ForceId id;
     if (!check(target)) return id;
-    if (dt <= S()) {
+    const float limit = S::largest().toFloat();
+    float gainA = 0.0f, gainB = 0.0f;
+    if (detail::isPositive(dt) && !detail::isNegative(k) &&
+        !detail::isNegative(damping) && k < S::largest() &&
+        damping < S::largest()) {
+      const float inverseMass =
+          particleAt(target.index).inverseMass.toFloat();
+      detail::stiffSpringGains(k.toFloat() * inverseMass,
+                               damping.toFloat() * inverseMass, dt.toFloat(),
+                               &gainA, &gainB);
+    } else {
+      gainA = limit;  // refused below
+    }
+    // Within (-limit, limit), which also leaves out inf and NaN.
+    if (!(gainA > -limit && gainA < limit && gainB > -limit &&
+          gainB < limit)) {
       mError |= WorldError::kBadArgument;
+      TINYPARTICLE_DEBUG_PRINT("stiff spring does not fit the scalar");
       return id;
     }
     ForceSlot* f = newForce(id, target.index, kAnchorIndex);
     if (f == nullptr) return id;
-    const double inverseMass = particleAt(target.index).inverseMass.toFloat();
-    double gainA, gainB;
-    detail::stiffSpringGains(k.toFloat() * inverseMass,
-                             damping.toFloat() * inverseMass, dt.toFloat(),
-                             &gainA, &gainB);
     StiffSpringParams<S, Dim> params;
     params.anchor = anchor;
     params.positionGain = S(gainA);
@@ -420,8 +442,14 @@ class World
 
   // ---- Stepping -----------------------------------------------------------
 
-  // Advances the world by dt seconds (see the top of this file).
+  // Advances the world by dt seconds (see the top of this file). A dt that
+  // is not positive (0, negative, NaN) is refused: nothing moves, and
+  // WorldError::kBadArgument is raised.
   void step(S dt) {
+    if (!detail::isPositive(dt)) {
+      mError |= WorldError::kBadArgument;
+      return;
+    }
     TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
@@ -474,6 +502,31 @@ class World
   // `substeps` steps of dt each (so time advances by substeps * dt).
   void step(S dt, uint8_t substeps) {
     for (uint8_t i = 0; i < substeps; ++i) step(dt);
+  }
+
+  // Empties the world in place: no particles, forces, constraints or
+  // contacts; the error bits, the statistics, the iteration cap and the
+  // rods' state as in a new world. Unlike `world = World()` it builds no
+  // World temporary (on a 2 KB stack that may not fit), and every slot in
+  // use has its generation moved on, so that every handle from before the
+  // clear is stale, also once its slot is reused.
+  void clear() {
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      if (particleAt(i).inUse()) freeSlot(particleAt(i));
+    }
+    for (uint8_t i = 0; i < kForces; ++i) {
+      if (forceAt(i).inUse()) freeSlot(forceAt(i));
+    }
+    for (uint8_t i = 0; i < kConstraints; ++i) {
+      if (constraintAt(i).inUse()) freeSlot(constraintAt(i));
+    }
+    UniformStore::clearUniform();
+    RodStore::setRodBits(0);
+    RodStore::setRodSolver(nullptr);
+    mContactCount = 0;
+    mError = 0;
+    mIterationCap = 0;
+    mStats = StepStats();
   }
 
   // The resolver's iteration cap per step; 0 (the default) means twice the
@@ -555,6 +608,10 @@ class World
       move(p.position.x, p.velocity.x, byDt);
       move(p.position.y, p.velocity.y, byDt);
       if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
+      if (detail::isNonFinite(p.position)) {  // as in integrate()
+        nonFinitePosition(p);
+        continue;
+      }
       if (kForces != 0) {
         accelerate(p.velocity.x, S(), rest.x, byDt);
         accelerate(p.velocity.y, S(), rest.y, byDt);
@@ -734,12 +791,45 @@ class World
           p.velocity.addScaled(p.velocity, -loss);
         }
       }
+      // A float state that left the finite numbers (a diverging scene) is
+      // flagged, and the particle stops (see nonFinite()): two bit tests
+      // for the velocity, two for the position. Nothing at all for fixed
+      // point, whose values are always finite.
+      if (detail::isNonFinite(p.velocity)) {
+        nonFinite(p);
+        continue;
+      }
       if (!andMove) continue;
       move(p.position.x, p.velocity.x, byDt);
       move(p.position.y, p.velocity.y, byDt);
       if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
+      if (detail::isNonFinite(p.position)) nonFinitePosition(p);
     }
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
+  }
+
+  // A particle whose new velocity is not finite (float only) keeps the
+  // position it had (finite: it was checked when it moved) and stops: its
+  // velocity becomes zero, and WorldError::kNonFinite is raised. Out of
+  // line: rare.
+  TINYPARTICLE_NOINLINE void nonFinite(ParticleType& p) {
+    p.velocity = Vec();
+    mError |= WorldError::kNonFinite;
+    TINYPARTICLE_DEBUG_PRINT("non-finite state: particle stopped");
+  }
+  // A position that left the range while moving (a finite but huge
+  // velocity, or a position set to inf or NaN from outside): each such
+  // component saturates at S::largest() or S::lowest() (a NaN becomes 0),
+  // as fixed point would, and the particle stops as above. (Going back to
+  // the position before the move would need a copy of it for every
+  // particle and step: +300 cycles each on the Nano, measured.)
+  TINYPARTICLE_NOINLINE void nonFinitePosition(ParticleType& p) {
+    for (uint8_t k = 0; k < Dim; ++k) {
+      S& x = p.position[k];
+      if (!detail::isNonFinite(x)) continue;
+      x = x > S() ? S::largest() : (x < S() ? S::lowest() : S());
+    }
+    nonFinite(p);
   }
 
   // One axis of a step: v += a dt + (uniform a) dt, then x += v dt. Zeros
@@ -855,9 +945,9 @@ class World
     BuoyancyParams<S> params;
     params.surface = surface;
     params.maxDepth = maxDepth;
-    params.invTwiceDepth = S(0.5 / double(maxDepth.toFloat()));
-    params.fullForce =
-        S(double(density.toFloat()) * double(volume.toFloat()) * 9.81);
+    // In float on every platform, so that the bits are the same everywhere.
+    params.invTwiceDepth = S(0.5f / maxDepth.toFloat());
+    params.fullForce = S(density.toFloat() * volume.toFloat() * 9.81f);
     f->params.buoyancy = params;
     f->apply = &BuoyancyForce<World>::apply;
     return id;
