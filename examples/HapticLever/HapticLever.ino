@@ -31,8 +31,9 @@
 // This sketch uses two things from haptics instead, chosen by the scenarios
 // of the device simulator (extras/hil: release, partial support, push and
 // release, a rigid or springy grip at level):
-//  - The servo is sent the angle the lever will have 25 ms from now, from
-//    its angular velocity and acceleration (a second-order prediction). This
+//  - The servo is sent the angle the lever will have about 25 ms from now,
+//    from its angular velocity and acceleration (a second-order prediction,
+//    the push's share of it looking a little less far ahead). This
 //    cancels most of the servo's delay, which is what makes the loop
 //    unstable; with a first-order prediction (velocity only) the held short
 //    lever still oscillated, because the lead it gives comes with too much
@@ -114,12 +115,17 @@ const int kServoDirection = 1;      // -1 if the servo is mounted the other way
 // ---- Stabilisation (see the opening comment) -----------------------------
 // The damper across the foam, as a time: damping / foam stiffness. The push
 // is averaged over about 4 ms and its rate over about 8 ms (prepareStep()).
-const S kForceLead(0.01);     // s
+const S kForceLead(0.0125);   // s
 const S kPushLimit(40);       // N: the most the damper may make of a push
-// How far ahead the servo is sent: its frame and lag, about 25 ms. Both
-// figures were tuned in the device simulator; a shorter or a much longer
-// lead lets the held short lever oscillate again.
-const S kServoLead(0.025);    // s
+// How far ahead the servo is sent: about its frame and lag for the lever's
+// own motion (velocity and gravity), less for the part that the user's push
+// adds, since that part closes the loop through the foam and a longer
+// horizon adds gain at the loop's frequency. The three times were tuned in
+// the device simulator, including its runs with other foam damping, preload
+// and lever inertia; much shorter or longer ones let the held short lever
+// oscillate again.
+const S kServoLead(0.0275);   // s
+const S kPushLead(0.0175);    // s
 
 // For measurements only (the device simulator in extras/hil defines it):
 // a pin that changes state at every pass of loop(), so that each pass can be
@@ -217,18 +223,12 @@ bool serviceInputs() {
   return true;
 }
 
-// ---- Between steps ------------------------------------------------------
-// The physics step is the longest pass of the loop (about 10,000 to 13,000
-// cycles of the 15,625 in a step period), so it runs alone; the pass after
-// it prepares the next step: the push with its lead (the damper across the
-// foam), as a torque about the pivot, acting perpendicular to the virtual
-// lever (a quarter turn counterclockwise: pushing the physical end down
-// lifts the virtual end).
-// The range ends: past the line of either end (the rod at +-32.5 degrees),
-// the end is put back on it and, if it is still moving out, sent back with
-// half its speed, or stopped when it is slower than kRestingSpeed. Along
-// the range end's direction u (unit), the angle grows along t = (-u.y, u.x).
-const int8_t kStopHoldSteps = 16;
+// ---- The range ends -------------------------------------------------------
+// Past the line of either end (the rod at +-32.5 degrees), the lever's end
+// is put back on it and, if it is still moving out, sent back with half its
+// speed, or stopped when it is slower than kRestingSpeed. u is the range
+// end's direction (unit); the angle grows along t = (-u.y, u.x).
+const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
 void rangeEnd(Vec2<S>& position, Vec2<S>& velocity, S ux, S uy) {
@@ -239,6 +239,10 @@ void rangeEnd(Vec2<S>& position, Vec2<S>& velocity, S ux, S uy) {
   const S back = (speed > kRestingSpeed || speed < -kRestingSpeed)
                      ? -(speed * kEndBounce) : S();
   velocity = Vec2<S>(-uy * back, ux * back);
+  // The servo takes a new angle only every 20 ms: after a bounce it is kept
+  // at the range end for a little longer than that, or the prediction turns
+  // it back before the felt lever has reached the end.
+  if (back != S()) stopHold = (uy < S()) ? -kStopHoldSteps : kStopHoldSteps;
 }
 
 void rangeEnds() {
@@ -251,6 +255,13 @@ void rangeEnds() {
   }
 }
 
+// ---- Between steps --------------------------------------------------------
+// The physics step is the longest pass of the loop (about 7,500 to 9,000
+// cycles of the 15,625 in a step period), so it runs alone; the pass after
+// it keeps the range ends, prepares the next step and commands the servo.
+// The push with the damper across the foam acts as a torque about the
+// pivot, perpendicular to the virtual lever (a quarter turn counterclockwise:
+// pushing the physical end down lifts the virtual end).
 void prepareStep() {
   rangeEnds();
   // Averages with weights 1/4 and 1/8 per step, as shifts.
@@ -270,20 +281,20 @@ S leverRadians() {
   return atan2(end.y, end.x);
 }
 
-// The servo is sent the angle the lever will have kServoLead from now,
-// from its angular velocity and acceleration (a second-order prediction),
-// which makes up for most of the servo's delay.
+// The servo is sent the angle the lever will have a little later, from its
+// angular velocity and acceleration (a second-order prediction), which
+// makes up for most of the servo's delay.
 void commandServo() {
   const HapticWorld::ParticleType* end = world.particle(lever.end);
   const Vec2<S>& x = end->position;
   const S turnRate =
       (x.x * end->velocity.y - x.y * end->velocity.x) * inverseLengthSquared;
-  // The user's torque over the inertia is forceScale / mass; gravity's is
-  // -g x / L^2.
-  const S turnAcceleration =
-      forceScale * S(10) - S(9.81) * x.x * inverseLengthSquared;
-  S angle = leverRadians() +
-            (turnRate + turnAcceleration * kServoLead * S(0.5)) * kServoLead;
+  // Gravity's angular acceleration is -g x / L^2, the user's forceScale /
+  // mass (the end's 0.1 kg, from buildLever()).
+  const S gravity = -(S(9.81) * x.x * inverseLengthSquared);
+  S angle = leverRadians() + turnRate * kServoLead +
+            gravity * (kServoLead * kServoLead * S(0.5)) +
+            forceScale * (S(10) * kPushLead * kPushLead * S(0.5));
   if (stopHold != 0) {
     angle = stopHold < 0 ? -kRangeRadians : kRangeRadians;
     stopHold += stopHold < 0 ? 1 : -1;
