@@ -256,7 +256,7 @@ void rangeEnds() {
 }
 
 // ---- Between steps --------------------------------------------------------
-// The physics step is the longest pass of the loop (about 7,500 to 9,000
+// The physics step is the longest regular pass of the loop (about 8,500
 // cycles of the 15,625 in a step period), so it runs alone; the pass after
 // it keeps the range ends, prepares the next step and commands the servo.
 // The push with the damper across the foam acts as a torque about the
