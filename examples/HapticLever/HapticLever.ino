@@ -1,76 +1,86 @@
 // HapticLever: the one-degree-of-freedom haptic interface of the seed report
-// (chapter 2). One end of a small lever is physical, the other is virtual:
-// a 0.1 kg weight on a rod whose length a dial sets between 23 and 48 cm.
-// Two force-sensitive resistors (FSRs) measure how hard the user pushes the
-// physical end; the simulation turns that into a force on the virtual end,
-// steps the world, and a servo turns the lever to the virtual lever's angle.
-// Let go, and the weight falls, flipping the physical end up; the lever's
-// 65 degree range ends bounce it back with half its speed.
+// (chapter 2), an admittance display. One end of a small lever is physical,
+// the other is virtual: a 0.1 kg weight on a rod whose length a dial sets
+// between 23 and 48 cm. Two force-sensitive resistors (FSRs), in foam on a
+// mount that a servo turns, measure how hard the user pushes the physical
+// end; the sketch turns that push into a torque on the virtual lever, steps
+// the world 1,024 times a second, and turns the servo to the virtual angle.
 //
-// As in the report (Code Blocks 2.1 and 2.2, sections 2.4 and 4.2.2):
-//  - the FSR readings go through the report's fitted curve (Function 1),
-//    down minus up, averaged over the last two readings;
-//  - the force acts perpendicular to the lever, scaled by the mechanical
-//    advantage (sensors 4 cm from the pivot / virtual lever length), through
-//    a custom force generator that reads the sketch's vector;
-//  - selective damping: when the user pushes against the motion harder than
-//    0.5 N, the velocity is scaled down (this calms the oscillations of the
-//    foam-backed sensor mount);
-//  - the virtual lever is drawn as ASCII frames on Serial (115200 baud).
-// Unlike the report, the range ends are two half-space planes through the
-// pivot (restitution 0.5), the step is a fixed 1/256 s kept in step with
-// the clock, and frames go out a line at a time so the physics never waits
-// for the serial line.
+// What you should feel and see: let go, and the physical end flips up as the
+// virtual weight falls, hits the end of the lever's 65 degree range and
+// bounces back with half its speed. Push the end down and you lift the
+// weight; hold the lever level and it stays still. A short lever (dial at
+// 0) is quick and light, a long one slow and heavy. The Serial Monitor
+// (115200 baud) shows ASCII frames of the virtual lever with a status line;
+// set kPlotter to true for the Serial Plotter (angle, force, length).
 //
-// Without hardware (or in simavr, whose analog inputs read 0) there is no
-// push: the lever falls to its lower end, bounces and settles, and the
-// sketch keeps drawing five frames a second.
-//
+// Hardware: an Arduino Nano, two Interlink FSR 402 in 10 kOhm dividers on
+// A0 (pushed down) and A1 (pushed up), a 10 kOhm dial on A2, an FS0521HV
+// servo on pin 7 with its own 7.5 V supply; see extras/doc/wiring.md.
 // Needs the Servo library (Library Manager: "Servo").
+//
+// How the loop stays stable. The servo takes a new angle only at its next
+// 20 ms pulse and then lags about 10 ms more, so the mount that presses the
+// foam follows the virtual lever 20-30 ms late. Held by a hand, the foam
+// (about 5 N per degree at the sensors) is a stiff spring on the light
+// virtual lever, and a spring that pushes late pumps energy in: the plain
+// admittance loop oscillates (report 4.2.2). The report's cure, scaling the
+// velocity down while the push opposes the motion, is a factor per step
+// (its strength changes with the step rate) and it brakes every steady push
+// too: a hand that holds two thirds of the weight stops the fall.
+// This sketch uses two things from haptics instead, chosen by the scenarios
+// of the device simulator (extras/hil: release, partial support, push and
+// release, a rigid or springy grip at level):
+//  - The servo is sent the angle the lever will have about 25 ms from now,
+//    from its angular velocity and acceleration (a second-order prediction,
+//    the push's share of it looking a little less far ahead). This
+//    cancels most of the servo's delay, which is what makes the loop
+//    unstable; with a first-order prediction (velocity only) the held short
+//    lever still oscillated, because the lead it gives comes with too much
+//    gain at the oscillation's frequency.
+//  - A damper across the foam, in the spirit of a virtual coupling (Colgate
+//    et al. 1995): the foam is the coupling's spring, measured by the FSRs,
+//    and its damper is computed from how fast the measured push changes,
+//    push + kForceLead * d(push)/dt (d(push)/dt is the foam's stiffness
+//    times its deflection rate). It is a time in seconds, not a factor per
+//    step, so it does not depend on the step rate, and a steady push has no
+//    rate: the weight held, lifted or let down slowly moves as the physics
+//    says.
+// What was not chosen: a passivity observer/controller (Hannaford and Ryu
+// 2002) watches the energy at the user's port, but the oscillation also
+// runs against a rigid grip, where no energy flows through that port, and
+// the mount's real velocity is not measured; a low-pass filter on the force
+// adds delay and makes the oscillation worse; damping the virtual lever's
+// own motion makes the weight fall as if through water (report 4.2.2).
+//
+// The sketch never waits: the physics step runs alone in its pass of
+// loop(); the analog inputs are converted one at a time while the loop does
+// other work; serial output is written only when the transmit buffer has
+// room for the whole line; the servo is commanded in microseconds (about
+// 0.1 degree each).
 #include <Servo.h>
 #include <TinyParticle.h>
 
-// ---- Wiring -------------------------------------------------------------
+typedef Q16_16 S;
+
+// ---- Wiring (extras/doc/wiring.md) ---------------------------------------
 const uint8_t kFsrDownPin = A0;     // squeezed when the user pushes down
 const uint8_t kFsrUpPin = A1;       // squeezed when the user pushes up
 const uint8_t kLengthDialPin = A2;  // the dial for the virtual lever length
 const uint8_t kServoPin = 7;
 
-// ---- The device -----------------------------------------------------------
-typedef Q16_16 S;
-const S kSensorDistance(0.04);      // m, FSRs to pivot
-const S kShortest(0.23);            // m, dial at 0
-const S kLengthSpan(0.25);          // m, dial at 1023: 0.48 m
-const float kHalfRangeDegrees = 32.5f;  // the 65 degree range, centred
-const S kEndBounce(0.5);            // restitution at the range ends
-const S kDampingThreshold(0.5);     // N, section 4.2.2
-const int kServoCentre = 90;        // degrees when the lever is level
-const int kServoDirection = 1;      // -1 if the servo is mounted the other way
-const int kFsrLimit = 960;          // the fitted curve has a pole near 990
+// ---- Output --------------------------------------------------------------
+// false: ASCII frames and a status line (Serial Monitor); true: one line
+// `angle:<deg> force:<N> length:<m>` every 20 ms (Serial Plotter).
+const bool kPlotter = false;
 
-// For measurements only (the device simulator in extras/hil defines it):
-// a pin that changes state at every pass of loop(), so that each pass can be
-// timed from outside. Leave it undefined on a real device.
-// #define HAPTIC_PROFILE_PIN 8
-
-// ---- The simulation ------------------------------------------------------
-// The lever scene (pivot, 0.1 kg end, rod, gravity, user force) plus the two
-// range ends: 2 particles, 2 forces, 3 constraints, 3 contacts.
-typedef World<S, 2, 2, 2, 3, 3> HapticWorld;
-HapticWorld world;
-LeverScene lever;
-Vec2<S> userForce;  // N, read by the custom force generator every step
-
-const S kDt(1.0 / 256);
-RealTimeLoop timing(256, 5);  // 256 steps a second, 5 frames a second
-// The lever's end reaches 0.48 m: x from -0.1 to 0.5 m, y from -0.3 m up.
-AsciiRenderer<HapticWorld, 30, 15> renderer(S(-0.1), S(-0.3), S(0.02),
-                                            S(0.04));
-Servo leverServo;
-
-// Function 1 of the report: an FSR reading (0-1023) to grams,
-// x / (-1.30315751e-5 x^2 + 1.063940729e-2 x + 2.30339406), written with
-// u = x / 1024 so that every term fits Q16.16; then grams to newtons.
+// ---- Calibration ---------------------------------------------------------
+// One FSR reading (0-1023) to newtons. This is the report's Function 1,
+// grams = x / (-1.30315751e-5 x^2 + 1.063940729e-2 x + 2.30339406), written
+// with u = x / 1024 so that every term fits Q16.16. To calibrate your own
+// sensors, replace the body of this function (it runs outside the physics
+// step, once per reading).
+const int kFsrLimit = 960;  // the fitted curve has a pole near 990
 S fsrNewtons(int reading) {
   if (reading <= 0) return S();
   if (reading > kFsrLimit) reading = kFsrLimit;
@@ -81,100 +91,334 @@ S fsrNewtons(int reading) {
   return x / denominator * S(0.00981);
 }
 
-S leverLength() {
-  return kShortest + kLengthSpan * S(analogRead(kLengthDialPin)) *
-                         S(1.0 / 1023);
+// ---- The device ----------------------------------------------------------
+const S kSensorDistance(0.04);      // m, FSRs to pivot
+const S kShortest(0.23);            // m, dial at 0
+const S kLengthSpan(0.25 / 1023);   // m per dial step: 0.48 m at 1023
+// The lever's 65 degree range, centred on level: cos and sin of 32.5 deg.
+const S kStopCos(0.843391);
+const S kStopSin(0.537300);
+const S kRangeRadians(0.567232);
+const S kEndBounce(0.5);            // restitution at the range ends
+// Slower than this (m/s) into a range end, the end rests on it: about what
+// gravity adds in two steps.
+const S kRestingSpeed(0.02);
+// The servo: the Servo library's default pulse range (544 us at 0 degrees,
+// 2400 us at 180), level at 90 degrees.
+const int kServoMinUs = 544;
+const int kServoMaxUs = 2400;
+const int kServoLevelUs = 1472;
+const S kServoUsPerRadian(1856.0 / 3.14159265);
+const int kServoRangeUs = 335;      // 32.5 degrees
+const int kServoDirection = 1;      // -1 if the servo is mounted the other way
+
+// ---- Stabilisation (see the opening comment) -----------------------------
+// The damper across the foam, as a time: damping / foam stiffness. The push
+// is averaged over about 4 ms and its rate over about 8 ms (prepareStep()).
+const S kForceLead(0.0125);   // s
+const S kPushLimit(40);       // N: the most the damper may make of a push
+// How far ahead the servo is sent: about its frame and lag for the lever's
+// own motion (velocity and gravity), less for the part that the user's push
+// adds, since that part closes the loop through the foam and a longer
+// horizon adds gain at the loop's frequency. The three times were tuned in
+// the device simulator, including its runs with other foam damping, preload
+// and lever inertia; much shorter or longer ones let the held short lever
+// oscillate again.
+const S kServoLead(0.0275);   // s
+const S kPushLead(0.0175);    // s
+
+// For measurements only (the device simulator in extras/hil defines it):
+// a pin that changes state at every pass of loop(), so that each pass can be
+// timed from outside. Leave it undefined on a real device.
+// #define HAPTIC_PROFILE_PIN 8
+
+// ---- The simulation ------------------------------------------------------
+// The lever scene (pivot, 0.1 kg end, rod, gravity, user force): 2
+// particles, 2 forces, 1 constraint; rods take no contacts. The range ends
+// are kept by the sketch (rangeEnds() below), not by two planes of the
+// engine: at 1,024 steps a second their contacts cost about 2,000 cycles a
+// step when the lever rests on one, more than the step can spare.
+typedef World<S, 2, 2, 2, 1, 0> HapticWorld;
+HapticWorld world;
+LeverScene lever;
+Vec2<S> userForce;  // N, read by the custom force generator every step
+
+const uint16_t kStepsPerSecond = 1024;
+const S kDt(1.0 / 1024);
+RealTimeLoop timing(kStepsPerSecond, kPlotter ? 50 : 5);
+// The lever's end reaches 0.48 m: x from -0.1 to 0.5 m, y from -0.3 m up.
+// 24 x 12 characters of 2.5 x 5 cm: a line takes about 11,000 cycles.
+AsciiRenderer<HapticWorld, 24, 12> renderer(S(-0.1), S(-0.3), S(0.025),
+                                            S(0.05));
+Servo leverServo;
+
+// ---- Analog inputs without waiting ---------------------------------------
+// start() begins a conversion, ready() says when it is done (13 ADC clocks,
+// 104 us on a 16 MHz Nano), value() gives it. On the ATmega328P this is the
+// ADC's registers; on other boards it falls back to analogRead(), which
+// waits.
+#if defined(__AVR_ATmega328P__)
+struct AnalogInput {
+  static void begin() {  // AVcc reference, clock / 128 (125 kHz)
+    ADCSRA = _BV(ADEN) | _BV(ADPS2) | _BV(ADPS1) | _BV(ADPS0);
+  }
+  static void start(uint8_t pin) {
+    ADMUX = _BV(REFS0) | ((pin - A0) & 0x07);
+    ADCSRA |= _BV(ADSC);
+  }
+  static bool ready() { return !(ADCSRA & _BV(ADSC)); }
+  static int value() { return ADC; }
+};
+#else
+struct AnalogInput {
+  static int last;
+  static void begin() {}
+  static void start(uint8_t pin) { last = analogRead(pin); }
+  static bool ready() { return true; }
+  static int value() { return last; }
+};
+int AnalogInput::last = 0;
+#endif
+
+// The inputs in turn: down, up, down, up, ... and the dial every 32nd.
+uint8_t inputTurn = 0;
+uint8_t inputPin() {
+  if ((inputTurn & 31) == 31) return kLengthDialPin;
+  return (inputTurn & 1) ? kFsrUpPin : kFsrDownPin;
 }
 
-// A range end: the plane through the pivot along angle `degrees`, facing
-// the allowed side (up for the lower end, down for the upper one). Its
-// offset is minus the end's radius, so the centre stops on the line.
-void addRangeEnd(float degrees, bool lower) {
-  const float radians = degrees * 0.0174533f;
-  const float nx = lower ? -sin(radians) : sin(radians);
-  const float ny = lower ? cos(radians) : -cos(radians);
-  world.addPlane(Vec2<S>(nx, ny), -world.particle(lever.end)->radius,
-                 kEndBounce);
-}
+S downNewtons, upNewtons;  // the last reading of each FSR
+S push;                    // N at the sensors, averaged (down minus up)
+S pushRate;                // N/s, averaged
+int dialReading = -100;    // the dial's reading behind the lever length
+S leverLength;             // m, the virtual lever
+S inverseLengthSquared;    // 1 / m^2 of the virtual lever
+S forcePerNewton;          // sensor distance / length^2: push to end force
+S forceScale;              // 1/s^2: the user's force on the end / its offset
 
-S pushes[2];  // the last two net FSR forces, N
-uint8_t nextPush = 0;
-
-// Reads the sensors and the dial; sets the user force and the rod length.
-void readDevice() {
-  pushes[nextPush] = fsrNewtons(analogRead(kFsrDownPin)) -
-                     fsrNewtons(analogRead(kFsrUpPin));
-  nextPush ^= 1;
-  const S push = (pushes[0] + pushes[1]) * S(0.5);
-
-  const S length = leverLength();
+void setLeverLength(int reading) {
+  dialReading = reading;
+  const S length = kShortest + kLengthSpan * S(reading);
   world.setLength(lever.rod, length);
-
-  // Perpendicular to the lever (a quarter turn counterclockwise): pushing
-  // the physical end down lifts the virtual end.
-  const Vec2<S>& end = world.particle(lever.end)->position;
-  const S distance = end.magnitude();
-  if (distance == S()) return;
-  const S scale = push * kSensorDistance / length / distance;
-  userForce = Vec2<S>(-end.y * scale, end.x * scale);
+  leverLength = length;
+  inverseLengthSquared = S(1) / (length * length);
+  forcePerNewton = kSensorDistance * inverseLengthSquared;
 }
 
-// Section 4.2.2: when the user pushes against the motion harder than the
-// threshold, scale the velocity down by threshold / push.
-void selectiveDamping() {
+// Collects a finished conversion and starts the next; false if none was
+// finished.
+bool serviceInputs() {
+  if (!AnalogInput::ready()) return false;
+  const uint8_t pin = inputPin();
+  const int reading = AnalogInput::value();
+  ++inputTurn;
+  AnalogInput::start(inputPin());
+  if (pin == kFsrDownPin) {
+    downNewtons = fsrNewtons(reading);
+  } else if (pin == kFsrUpPin) {
+    upNewtons = fsrNewtons(reading);
+  } else if (reading > dialReading + 3 || reading < dialReading - 3) {
+    setLeverLength(reading);  // a few steps of hysteresis against jitter
+  }
+  return true;
+}
+
+// ---- The range ends -------------------------------------------------------
+// Past the line of either end (the rod at +-32.5 degrees), the lever's end
+// is put back on it and, if it is still moving out, sent back with half its
+// speed, or stopped when it is slower than kRestingSpeed. u is the range
+// end's direction (unit); the angle grows along t = (-u.y, u.x).
+const int8_t kStopHoldSteps = 24;
+int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
+
+void rangeEnd(Vec2<S>& position, Vec2<S>& velocity, S ux, S uy) {
+  const S speed = velocity.y * ux - velocity.x * uy;  // along t
+  const bool outward = (uy < S()) ? speed < S() : speed > S();
+  position = Vec2<S>(ux * leverLength, uy * leverLength);
+  if (!outward) return;
+  const S back = (speed > kRestingSpeed || speed < -kRestingSpeed)
+                     ? -(speed * kEndBounce) : S();
+  velocity = Vec2<S>(-uy * back, ux * back);
+  // The servo takes a new angle only every 20 ms: after a bounce it is kept
+  // at the range end for a little longer than that, or the prediction turns
+  // it back before the felt lever has reached the end.
+  if (back != S()) stopHold = (uy < S()) ? -kStopHoldSteps : kStopHoldSteps;
+}
+
+void rangeEnds() {
   HapticWorld::ParticleType* end = world.particle(lever.end);
-  const S speed = end->velocity.magnitude();
-  if (speed == S()) return;
-  const S along = dot(userForce, end->velocity) / speed;
-  if (along < -kDampingThreshold) {
-    end->velocity *= kDampingThreshold / -along;
+  const Vec2<S>& x = end->position;
+  if (kStopCos * x.y + kStopSin * x.x < S()) {
+    rangeEnd(end->position, end->velocity, kStopCos, -kStopSin);
+  } else if (kStopCos * x.y - kStopSin * x.x > S()) {
+    rangeEnd(end->position, end->velocity, kStopCos, kStopSin);
   }
 }
 
-int leverDegrees() {
+// ---- Between steps --------------------------------------------------------
+// The physics step is the longest regular pass of the loop (about 8,500
+// cycles of the 15,625 in a step period), so it runs alone; the pass after
+// it keeps the range ends, prepares the next step and commands the servo.
+// The push with the damper across the foam acts as a torque about the
+// pivot, perpendicular to the virtual lever (a quarter turn counterclockwise:
+// pushing the physical end down lifts the virtual end).
+void prepareStep() {
+  rangeEnds();
+  // Averages with weights 1/4 and 1/8 per step, as shifts.
+  const S change = S::fromRaw((downNewtons - upNewtons - push).raw() >> 2);
+  push += change;
+  pushRate += S::fromRaw((change.raw() * 1024L - pushRate.raw()) >> 3);
+  S felt = push + pushRate * kForceLead;
+  if (felt > kPushLimit) felt = kPushLimit;
+  if (felt < -kPushLimit) felt = -kPushLimit;
   const Vec2<S>& end = world.particle(lever.end)->position;
-  return (atan2(end.y, end.x) * S(57.29578)).toInt();
+  forceScale = felt * forcePerNewton;
+  userForce = Vec2<S>(-end.y * forceScale, end.x * forceScale);
 }
 
+S leverRadians() {
+  const Vec2<S>& end = world.particle(lever.end)->position;
+  return atan2(end.y, end.x);
+}
+
+// The servo is sent the angle the lever will have a little later, from its
+// angular velocity and acceleration (a second-order prediction), which
+// makes up for most of the servo's delay.
+void commandServo() {
+  const HapticWorld::ParticleType* end = world.particle(lever.end);
+  const Vec2<S>& x = end->position;
+  const S turnRate =
+      (x.x * end->velocity.y - x.y * end->velocity.x) * inverseLengthSquared;
+  // Gravity's angular acceleration is -g x / L^2, the user's forceScale /
+  // mass (the end's 0.1 kg, from buildLever()).
+  const S gravity = -(S(9.81) * x.x * inverseLengthSquared);
+  S angle = leverRadians() + turnRate * kServoLead +
+            gravity * (kServoLead * kServoLead * S(0.5)) +
+            forceScale * (S(10) * kPushLead * kPushLead * S(0.5));
+  if (stopHold != 0) {
+    angle = stopHold < 0 ? -kRangeRadians : kRangeRadians;
+    stopHold += stopHold < 0 ? 1 : -1;
+  }
+  int32_t offset = ((angle * kServoUsPerRadian).raw() + 0x8000L) >> 16;
+  // Never past the range ends (the prediction overshoots them at a bounce).
+  if (offset > kServoRangeUs) offset = kServoRangeUs;
+  if (offset < -kServoRangeUs) offset = -kServoRangeUs;
+  leverServo.writeMicroseconds(kServoLevelUs +
+                               kServoDirection * int(offset));
+}
+
+// ---- Serial output, never waiting ----------------------------------------
+// Lines are put together in a buffer on the stack and written in one go
+// when the transmit buffer has room for the whole line.
+const uint8_t kLineMax = 52;
+
+uint8_t appendText(char* line, uint8_t n, const __FlashStringHelper* text) {
+  const char* p = reinterpret_cast<const char*>(text);
+  for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
+    line[n++] = c;
+  }
+  return n;
+}
+
+// A value with two decimals.
+uint8_t appendHundredths(char* line, uint8_t n, S value) {
+  int32_t hundredths = ((value * S(100)).raw() + 0x8000L) >> 16;
+  if (hundredths < 0) {
+    line[n++] = '-';
+    hundredths = -hundredths;
+  }
+  // 16-bit digits are several times faster than 32-bit ones on the AVR.
+  uint16_t h = hundredths > 65535L ? 65535u : uint16_t(hundredths);
+  char digits[6];
+  uint8_t count = 0;
+  do {
+    digits[count++] = char('0' + h % 10);
+    h /= 10;
+  } while (h > 0 || count < 3);
+  while (count > 0) {
+    line[n++] = digits[--count];
+    if (count == 2) line[n++] = '.';
+  }
+  return n;
+}
+
+// The status line (or the plotter's line); false if there is no room yet.
+bool writeStatus() {
+  char line[kLineMax];
+  const S degrees = leverRadians() * S(57.29578);
+  const S length = kShortest + kLengthSpan * S(dialReading);
+  uint8_t n = 0;
+  if (kPlotter) {
+    n = appendText(line, n, F("angle:"));
+    n = appendHundredths(line, n, degrees);
+    n = appendText(line, n, F(" force:"));
+    n = appendHundredths(line, n, push);
+    n = appendText(line, n, F(" length:"));
+    n = appendHundredths(line, n, length);
+  } else {
+    n = appendText(line, n, F("angle "));
+    n = appendHundredths(line, n, degrees);
+    n = appendText(line, n, F(" deg  push "));
+    n = appendHundredths(line, n, push);
+    n = appendText(line, n, F(" N  length "));
+    n = appendHundredths(line, n, length);
+    n = appendText(line, n, F(" m"));
+  }
+  line[n++] = '\r';
+  line[n++] = '\n';
+  if (Serial.availableForWrite() < n) return false;
+  Serial.write(reinterpret_cast<const uint8_t*>(line), n);
+  return true;
+}
+
+// ---- Setup and loop ------------------------------------------------------
 void setup() {
   Serial.begin(115200);
-  leverServo.attach(kServoPin);
+  leverServo.attach(kServoPin, kServoMinUs, kServoMaxUs);
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
-  lever = buildLever(world, &userForce, leverLength());
-  addRangeEnd(-kHalfRangeDegrees, true);
-  addRangeEnd(kHalfRangeDegrees, false);
-  Serial.println(F("HapticLever: push the lever; turn the dial for its length"));
+  lever = buildLever(world, &userForce, kShortest);
+  setLeverLength(analogRead(kLengthDialPin));
+  AnalogInput::begin();
+  AnalogInput::start(inputPin());
+  if (!kPlotter) {
+    Serial.println(F("HapticLever: push the lever; turn the dial for its length"));
+  }
 }
 
-bool drawing = false;
+enum Output : uint8_t { kIdle, kFrame, kStatus };
+Output output = kIdle;
+bool stepped = false;
 
 void loop() {
 #ifdef HAPTIC_PROFILE_PIN
   *portOutputRegister(digitalPinToPort(HAPTIC_PROFILE_PIN)) ^=
       digitalPinToBitMask(HAPTIC_PROFILE_PIN);
 #endif
-  uint8_t due = timing.stepsDue();
-  if (due > 0) readDevice();
-  for (; due > 0; --due) {
-    selectiveDamping();
-    world.step(kDt);
+  // A pass either steps the physics or does one piece of the other work,
+  // so that no pass is long and every step comes on time.
+  if (stepped) {
+    stepped = false;
+    prepareStep();
+    commandServo();
+    return;
   }
-  const int degrees = leverDegrees();
-  leverServo.write(kServoCentre + kServoDirection * degrees);
-
-  if (!drawing && timing.frameDue()) drawing = true;
-  while (drawing && Serial.availableForWrite() >= renderer.lineLength()) {
-    if (renderer.drawLine(world, Serial)) {
-      drawing = false;
-      Serial.print(F("angle "));
-      Serial.print(degrees);
-      Serial.print(F(" deg  push "));
-      Serial.print(userForce.magnitude().toFloat(), 2);
-      Serial.print(F(" N  length "));
-      Serial.print(leverLength().toFloat(), 2);
-      Serial.println(F(" m"));
+  uint8_t due = timing.stepsDue();
+  if (due > 0) {
+    for (; due > 0; --due) world.step(kDt);
+    stepped = true;
+    return;
+  }
+  if (serviceInputs()) return;
+  if (output == kIdle && timing.frameDue()) output = kPlotter ? kStatus : kFrame;
+  if (output == kIdle || timing.microsToNextStep() < 100) return;
+  if (output == kFrame) {
+    if (Serial.availableForWrite() >= renderer.lineLength() &&
+        renderer.drawLine(world, Serial)) {
+      output = kStatus;
     }
+  } else if (writeStatus()) {
+    output = kIdle;
   }
 }
