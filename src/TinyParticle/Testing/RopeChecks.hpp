@@ -41,7 +41,7 @@ struct RopeChecks {
   static RopeResult settle() {
     typedef RopeWorld<S, 2> W;
     static W world;  // (static: keeps the Nano's stack small)
-    world = W();
+    world.clear();  // in place: W() would build a second world on the stack
     const RopeScene rope = buildRope(world);
     const S dt = S(1) / S(256);
     for (uint16_t n = 0; n < 20 * 256; ++n) world.step(dt);
