@@ -17,7 +17,7 @@ void setupPendulum() {
   // 1 kg at (sin 0.5, -cos 0.5): 1 m from the pivot, 0.5 rad out.
   bob = world.addParticle(Vec2<S>(0.479426, -0.877583), S(1), S(0.05));
   world.addRod(bob, pivot, S(1));
-  world.addGravity(bob);
+  world.addGravity();  // the world's gravity: the pivot is fixed, the bob falls
 }
 
 AsciiRenderer<World<S, 2, 2, 1, 1, 1>, 41, 12> renderer(S(-1.025), S(-1.1),

@@ -36,7 +36,13 @@ COLUMNS = ["feature", "scalar", "dim", "flash", "ram", "flash_delta",
 
 
 def run(build_root, jobs, quick=False):
-    """Rows of memory.csv. quick: the first three rungs, Q16.16 2D only."""
+    """Rows of memory.csv. quick: the first three rungs, Q16.16 2D only.
+
+    The ladder is cumulative, so its last rungs may not fit a Nano's
+    30,720 B: they are built with the builder's limit raised to the chip's
+    32 KB (NANO_MAX_FLASH), measured all the same, and the table marks
+    them."""
+    os.environ["NANO_MAX_FLASH"] = "32768"
     features = list(range(3)) if quick else list(range(len(FEATURES)))
     scalars = SCALARS[:1] if quick else SCALARS
     dims = DIMS[:1] if quick else DIMS
@@ -57,9 +63,18 @@ def run(build_root, jobs, quick=False):
             if f == 0:
                 return None
             name = "mem-s%d-d%d-f%d-cycles" % (s, d, f)
-            elf, _, _ = runner.nano_build(
-                SKETCH, os.path.join(build_root, name),
-                [("FEATURE", f), ("SCALAR", s), ("DIM", d), ("BENCH_CYCLES", 1)])
+            try:
+                elf, _, _ = runner.nano_build(
+                    SKETCH, os.path.join(build_root, name),
+                    [("FEATURE", f), ("SCALAR", s), ("DIM", d),
+                     ("BENCH_CYCLES", 1)])
+            except runner.BenchError as e:
+                # With Serial and the counter added, the last rungs may pass
+                # the ATmega328P's 32 KB: no cycle figure (NA) for them.
+                if "will not fit" not in str(e) and "overflowed" not in str(e):
+                    raise
+                log("MemoryBenchmark %s: does not fit the chip, cycles NA" % name)
+                return None
             lines = runner.simavr_run(elf, timeout=300, log_path=os.path.join(
                 logs, name + ".txt"))
             for line in lines:

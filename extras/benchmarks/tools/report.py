@@ -466,7 +466,9 @@ def memory_markdown(rows, tools, quick):
         sel = [r for r in rows if r["scalar"] == scalar and r["dim"] == dim]
         lines += md_table(
             ["feature", "flash", "+flash", "RAM", "+RAM", "cycles/step"],
-            [[r["feature"], fmt_int(r["flash"]), fmt_int(r["flash_delta"], True),
+            [[r["feature"], fmt_int(r["flash"]) + (
+                " (over a Nano's 30,720)" if (num(r["flash"]) or 0) > 30720 else ""),
+              fmt_int(r["flash_delta"], True),
               fmt_int(r["ram"]), fmt_int(r["ram_delta"], True),
               fmt_int(r["cycles_per_step"])] for r in sel])
         lines.append("")

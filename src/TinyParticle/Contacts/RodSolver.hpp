@@ -7,21 +7,22 @@
 // together, in two linear solves per step (the scheme of SHAKE and RATTLE,
 // Andersen 1983, written in velocities):
 //
-//  1. Positions (SHAKE). After the integrator's step, rod i between a and
-//     b gets an impulse mu_i along its direction u_i at the start of the
-//     step (kept from the last step), chosen so that the new positions
-//     x + dt v keep the rod's length. The particles' velocities change by
-//     w mu u (w the inverse mass) and their positions by dt times that.
-//     For rod i, with d the vector from b to a after the integrator, w_r
-//     the relative velocity and a = d.u:
-//       sum_j C_ij mu_j = (L - a) / dt - (dt / 2) |w_r across u|^2 / L
-//     (to second order: the rod's new length is a plus the correction,
-//     less what its turn across u takes, |d across u|^2 / 2L). Everything
-//     here is a velocity, so fixed point keeps its precision even where the
+//  1. Positions (SHAKE). The integrator has changed the velocities (half
+//     of gravity's kick) but not yet the positions. Rod i between a and b
+//     gets an impulse mu_i along its direction u_i (kept from the last
+//     step), chosen so that the rod predicted at the end of the step,
+//     d + dt w (d from b to a, w their relative velocity), has the rod's
+//     length: with a = d.u and r = w.u, to second order in the rod's turn,
+//       sum_j C_ij mu_j = -r - (dt / 2L) |speed across u|^2,
+//     everything a speed, so that fixed point keeps its precision where the
 //     correction of a position is a fraction of a unit (Q16.16 at 1 kHz).
+//     The length error the rod has now, L - a, is solved for too but
+//     mended by moving the ends alone. Rods that turn by more than 1/16 rad
+//     in a step take Newton passes towards their exact length. Then every
+//     particle moves once, x += dt v, and gets the rest of gravity's kick.
 //  2. Velocities (RATTLE). The directions at the end of the step, u'_i,
 //     and impulses along them that remove every rod's stretching speed:
-//       sum_j C'_ij nu_j = -w_r . u'_i.
+//       sum_j C'_ij nu_j = -w . u'_i.
 // The matrix C_ij is (w_a + w_b) on the diagonal and +-w_p (u_i . u_j)
 // where rods i and j share a movable particle p. Along a chain it is
 // tridiagonal: one elimination down the chain and one back solves it
@@ -38,16 +39,18 @@
 // one through a particle that belongs to these two rods only. A world
 // whose rods form only chains (ropes, pendulums, levers) is solved in one
 // pass. Where three or more rods meet at a particle, or rods close a loop,
-// the chains are coupled through those particles: the pass repeats (block
-// Gauss-Seidel) until the rods hold to within kTolerance, at most
-// kMaxPasses times; rods that still do not hold (a loop whose lengths
-// cannot all be met) raise WorldError::kRodsUnsatisfied and stay as close
-// as the passes got them. The chains are found again only when rods are
-// added or removed.
+// the chains are coupled through those particles: the velocity passes
+// repeat (block Gauss-Seidel), kMaxPasses times at most, and the length
+// errors are mended by one pass of moves per step. Rods still more than a
+// millimetre off after all the passes (a loop whose lengths cannot all be
+// met) raise WorldError::kRodsUnsatisfied and stay where the moves left
+// them: moves pump no speed into the world. The chains are found again
+// only when rods are added or removed.
 //
-// Cost per rod and step, Q16.16 on AVR: about 25 multiplies and two
+// Cost per rod and step, Q16.16 on AVR: about 30 multiplies and two
 // divisions (one per solve), no square root while the rod keeps its length
-// (the new direction is normalised by one Newton step from 1 / L).
+// (the new direction is normalised by one Newton step from 1 / L); lone
+// rods to an immovable end (a pendulum, a lever) skip the divisions.
 #pragma once
 
 #include <stdint.h>
@@ -81,8 +84,8 @@ struct RodSolver {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) rows[i].lone = false;
     // The position solve is exact to second order in each rod's turn: a
     // rod that turned by more than 1/16 rad in the step, or coupled chains,
-    // take further passes (Newton's iterations) until every rod is within
-    // kTolerance of its length.
+    // take further passes (Newton's iterations, or Gauss-Seidel) until
+    // every rod is within tolerance() of its length.
     pass.positions = true;
     uint8_t n = 0;
     for (;;) {

@@ -37,7 +37,7 @@ LeverScene buildLever(W& world, const typename W::Vec* userForce,
   end.x = length;
   scene.end = world.addParticle(end, S(0.1), S(0.01));
   scene.rod = world.addRod(scene.end, scene.pivot, length);
-  scene.gravity = world.addGravity(scene.end);
+  scene.gravity = world.addGravity();  // the pivot is fixed: only the end falls
   scene.user = world.addCustomForce(scene.end, userForce);
   return scene;
 }

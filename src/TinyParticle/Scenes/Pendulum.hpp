@@ -33,7 +33,7 @@ PendulumScene buildPendulum(W& world, typename W::Scalar length,
   bob.y = -(length * cos(theta0));
   scene.bob = world.addParticle(bob, mass);
   scene.rod = world.addRod(scene.bob, scene.pivot, length);
-  scene.gravity = world.addGravity(scene.bob);
+  scene.gravity = world.addGravity();  // the pivot is fixed: only the bob falls
   return scene;
 }
 
