@@ -196,14 +196,14 @@ struct RodSolver {
     bool coupled = false;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
-      LinkParamsOf(world, i).next = kNoIndex;
-      LinkParamsOf(world, i).prev = kAllIndex;  // not placed yet
+      linkParamsOf(world, i).next = kNoIndex;
+      linkParamsOf(world, i).prev = kAllIndex;  // not placed yet
       const Slot& s = world.constraintAt(i);
       if (degree(world, s.a) > 2 || degree(world, s.b) > 2) coupled = true;
     }
     for (uint8_t round = 0; round < 2; ++round) {
       for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-        if (!isRodAt(world, i) || LinkParamsOf(world, i).prev != kAllIndex) {
+        if (!isRodAt(world, i) || linkParamsOf(world, i).prev != kAllIndex) {
           continue;
         }
         const Slot& s = world.constraintAt(i);
@@ -222,13 +222,13 @@ struct RodSolver {
         uint8_t rod = i;
         uint8_t prev = kNoIndex;
         for (;;) {
-          LinkParamsOf(world, rod).prev = prev;
-          if (prev != kNoIndex) LinkParamsOf(world, prev).next = rod;
+          linkParamsOf(world, rod).prev = prev;
+          if (prev != kNoIndex) linkParamsOf(world, prev).next = rod;
           const Slot& r = world.constraintAt(rod);
           const uint8_t far = r.a == from ? r.b : r.a;
           if (degree(world, far) != 2) break;
           const uint8_t next = otherRod(world, rod, far);
-          if (next == kNoIndex || LinkParamsOf(world, next).prev != kAllIndex) {
+          if (next == kNoIndex || linkParamsOf(world, next).prev != kAllIndex) {
             break;  // back at the start of a loop
           }
           prev = rod;
@@ -240,7 +240,7 @@ struct RodSolver {
     world.setRodState(coupled ? W::kRodsCoupled : 0);
   }
 
-  static typename W::LinkParamsType& LinkParamsOf(W& world, uint8_t i) {
+  static typename W::LinkParamsType& linkParamsOf(W& world, uint8_t i) {
     return world.constraintAt(i).params.link;
   }
 
