@@ -74,6 +74,19 @@ struct RodSolver {
   // A rod's slot makes no contacts: this marks it (World::isRod()).
   static void generate(W&, Slot&, uint8_t) {}
 
+  // A rod just added: its length's inverse and its first direction. False
+  // (nothing set) for a length that is not positive.
+  static bool start(W& world, Slot& s) {
+    typename W::LinkParamsType& link = s.params.link;
+    if (!(link.length > S())) return false;
+    link.inverseLength = S(1) / link.length;
+    V d = span(world, s);
+    d.normalize();  // stays zero if the ends coincide
+    link.direction = d;
+    link.next = link.prev = kNoIndex;
+    return true;
+  }
+
   // The step's two solves (World::step calls them after integrating).
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (world.rodState() & W::kRodsChanged) findChains(world);
@@ -107,11 +120,8 @@ struct RodSolver {
     if (n == 1 || coupled) {
       for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
         if (!isRodAt(world, i)) continue;
-        if (rows[i].lone) {
-          lonePush(world, world.constraintAt(i), rows[i].moved, pass, true);
-        } else {
-          move(world, world.constraintAt(i), rows[i].moved, pass);
-        }
+        push(world, world.constraintAt(i), rows[i].moved, pass, true,
+             rows[i].lone);
       }
     }
     world.movePositions(pass.byDt);
@@ -372,45 +382,32 @@ struct RodSolver {
     return q.magnitudeSquared();
   }
 
-  // Applies rod s's impulse mu (per unit mass along u) to the velocities.
-  static void apply(W& world, const Slot& s, S mu, const Pass&) {
-    if (detail::isZero(mu)) return;
+  // Changes rod s's movable ends along u: their velocities by w amount
+  // (+ at a, - at b), or, for `position`, their positions by dt times
+  // that. A lone rod's one moving end takes the amount itself: its share
+  // w / (w_a + w_b) is 1.
+  static void push(W& world, const Slot& s, S amount, const Pass& pass,
+                   bool position, bool lone) {
+    if (detail::isZero(amount)) return;
     const V& u = s.params.link.direction;
     P& a = world.particleAt(s.a);
-    if (!a.isStatic()) a.velocity.addScaled(u, a.inverseMass * mu);
+    if (!a.isStatic()) {
+      pushEnd(a, u, lone ? amount : a.inverseMass * amount, pass, position);
+    }
     if (s.b != kAnchorIndex) {
       P& b = world.particleAt(s.b);
-      if (!b.isStatic()) b.velocity.addScaled(u, -(b.inverseMass * mu));
+      if (!b.isStatic()) {
+        pushEnd(b, u, -(lone ? amount : b.inverseMass * amount), pass,
+                position);
+      }
     }
   }
-
-  // A lone rod's moving end: its velocity (or, for `position`, its
-  // position by dt times that) changes by `speed` along u, away from the
-  // other end.
-  static void lonePush(W& world, const Slot& s, S speed, const Pass& pass,
-                       bool position) {
-    if (detail::isZero(speed)) return;
-    const V& u = s.params.link.direction;
-    P& a = world.particleAt(s.a);
-    P& moving = a.isStatic() ? world.particleAt(s.b) : a;
-    if (&moving != &a) speed = -speed;
+  static void pushEnd(P& p, const V& u, S change, const Pass& pass,
+                      bool position) {
     if (position) {
-      shift(moving.position, u, speed, pass);
+      shift(p.position, u, change, pass);
     } else {
-      moving.velocity.addScaled(u, speed);
-    }
-  }
-
-  // Moves rod s's ends along u by dt times `speed` per unit mass: the
-  // first pass's correction of the length error, without a velocity.
-  static void move(W& world, const Slot& s, S speed, const Pass& pass) {
-    if (detail::isZero(speed)) return;
-    const V& u = s.params.link.direction;
-    P& a = world.particleAt(s.a);
-    if (!a.isStatic()) shift(a.position, u, a.inverseMass * speed, pass);
-    if (s.b != kAnchorIndex) {
-      P& b = world.particleAt(s.b);
-      if (!b.isStatic()) shift(b.position, u, -(b.inverseMass * speed), pass);
+      p.velocity.addScaled(u, change);
     }
   }
   static void shift(V& x, const V& u, S speed, const Pass& pass) {
@@ -451,7 +448,7 @@ struct RodSolver {
         S move = S();
         const S right = rightSide(world, first, pass, move);
         if (pass.first) rows[head].moved = move;
-        lonePush(world, first, right, pass, false);
+        push(world, first, right, pass, false, true);
         continue;
       }
       // Down the chain: eliminate the coupling with the rod before.
@@ -493,7 +490,7 @@ struct RodSolver {
         muMove = rows[i].yMove - nextMultiplier * muMove;
         nextMultiplier = rows[i].multiplier;
         if (pass.first) rows[i].moved = muMove;
-        apply(world, world.constraintAt(i), mu, pass);
+        push(world, world.constraintAt(i), mu, pass, false, false);
       }
     }
   }

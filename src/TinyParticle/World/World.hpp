@@ -601,17 +601,8 @@ class World
     }
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
-      if ((p.flags & (ParticleType::kInUse | ParticleType::kStatic)) !=
-          ParticleType::kInUse) {
-        continue;
-      }
-      move(p.position.x, p.velocity.x, byDt);
-      move(p.position.y, p.velocity.y, byDt);
-      if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
-      if (detail::isNonFinite(p.position)) {  // as in integrate()
-        nonFinitePosition(p);
-        continue;
-      }
+      if (!isMoving(p)) continue;
+      if (!moveParticle(p, byDt)) continue;
       if (kForces != 0) {
         accelerate(p.velocity.x, S(), rest.x, byDt);
         accelerate(p.velocity.y, S(), rest.y, byDt);
@@ -768,10 +759,7 @@ class World
     bool haveDampingUnit = false;
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
-      if ((p.flags & (ParticleType::kInUse | ParticleType::kStatic)) !=
-          ParticleType::kInUse) {
-        continue;
-      }
+      if (!isMoving(p)) continue;
       // One axis at a time, written out: a loop over the axes would select
       // the component at every access.
       accelerate(p.velocity.x, p.acceleration.x, uniformStep.x, byDt);
@@ -799,13 +787,27 @@ class World
         nonFinite(p);
         continue;
       }
-      if (!andMove) continue;
-      move(p.position.x, p.velocity.x, byDt);
-      move(p.position.y, p.velocity.y, byDt);
-      if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
-      if (detail::isNonFinite(p.position)) nonFinitePosition(p);
+      if (andMove) moveParticle(p, byDt);
     }
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
+  }
+
+  // In use and movable: what the integrator steps.
+  static bool isMoving(const ParticleType& p) {
+    return (p.flags & (ParticleType::kInUse | ParticleType::kStatic)) ==
+           ParticleType::kInUse;
+  }
+
+  // x += v dt; false (and the particle stopped, see nonFinitePosition())
+  // when the new position is not finite (float only).
+  TINYPARTICLE_ALWAYS_INLINE bool moveParticle(ParticleType& p,
+                                               const Scaler<S>& byDt) {
+    move(p.position.x, p.velocity.x, byDt);
+    move(p.position.y, p.velocity.y, byDt);
+    if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
+    if (!detail::isNonFinite(p.position)) return true;
+    nonFinitePosition(p);
+    return false;
   }
 
   // A particle whose new velocity is not finite (float only) keeps the
@@ -958,18 +960,11 @@ class World
   ConstraintId rodAdded(ConstraintId id) {
     ConstraintSlot* c = constraint(id);
     if (c == nullptr) return id;
-    LinkParams<S, Dim>& link = c->params.link;
-    if (!(link.length > S())) {
+    if (!RodSolver<World>::start(*this, *c)) {
       freeSlot(*c);
       mError |= WorldError::kBadArgument;
       return ConstraintId();
     }
-    link.inverseLength = S(1) / link.length;
-    Vec d = particleAt(c->a).position;
-    d -= c->b == kAnchorIndex ? link.anchor : particleAt(c->b).position;
-    d.normalize();  // stays zero if the ends coincide
-    link.direction = d;
-    link.next = link.prev = kNoIndex;
     RodStore::addRodBits(kRodsChanged);
     RodStore::setRodSolver(&RodSolver<World>::solve);
     return id;
