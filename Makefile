@@ -5,7 +5,8 @@
 #
 # More in README.md ("Commands"). Each target first checks its Debian packages
 # (extras/scripts/setup-packages): as root it installs what is missing,
-# otherwise it prints the apt-get line to run.
+# otherwise it prints the apt-get line to run. Then it builds arduino-cli,
+# once, outside the repository (extras/scripts/arduino-cli-setup).
 
 SCRIPTS := extras/scripts
 DEMO_SECONDS ?= 8

@@ -397,7 +397,7 @@ static const char kFileName[] PROGMEM = __BASE_FILE__;
 
 inline void Test::failStart(uint16_t line) {
   if (mStatus == kRunning) mStatus = kFailed;
-  // Print the base name; arduino-builder compiles Name.ino as Name.ino.cpp.
+  // Print the base name; arduino-cli compiles Name.ino as Name.ino.cpp.
   const char* name = internal::kFileName;
   size_t n = 0;
   for (size_t i = 0; pgm_read_byte(internal::kFileName + i) != 0; ++i) {
