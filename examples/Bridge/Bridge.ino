@@ -44,7 +44,7 @@ void setup() {
 bool drawing = false;
 
 void loop() {
-  for (uint8_t n = timing.stepsDue(); n > 0; --n) world.step(Q16_16(1.0 / 256));
+  timing.runSteps(world);  // dt = 1/256 s, from timing
   if (!drawing && timing.frameDue()) drawing = true;
   while (drawing && Serial.availableForWrite() >= renderer.lineLength()) {
     drawing = !renderer.drawLine(world, Serial);
