@@ -9,6 +9,13 @@
 // prints a summary and sleeps; in simavr that ends the run. (The benchmark
 // runs this scene at 1/256 s; a Nano cannot do 256 steps of 16 balls a
 // second, so the real-time loop would let time slip.)
+//
+// Hardware: any Arduino with 2 KB of RAM or more (a Nano here), nothing
+// wired. On the PC it is `make demo`.
+//
+// What you should see: a 40 x 20 box of 'O's that fall, bounce off the
+// floor, the walls and each other, and settle along the bottom; under each frame the time and the contacts and resolver
+// iterations of the last step; at the end one summary line.
 #include <TinyParticle.h>
 #include <avr/sleep.h>
 

@@ -8,6 +8,14 @@
 // It shows buoyancy and drag for single particles, a floor plane, the
 // ASCII renderer (the water line is drawn by the sketch), and Float as the
 // scalar (Q16_16 works as well).
+//
+// Hardware: any Arduino (a Nano here), nothing wired; Serial Monitor at
+// 115200 baud. On the PC: `make demo DEMO=examples/Buoyancy`.
+//
+// What you should see: a tank drawn every 1.5 s with the water line as
+// '~', the three bodies falling in, bobbing and settling (the light one
+// high, the heavier one low, the stone on the bottom), then a table of
+// where each rests beside Archimedes' prediction, the two columns agreeing.
 #include <TinyParticle.h>
 #include <avr/sleep.h>
 

@@ -5,6 +5,14 @@
 //
 // It shows a World sized for the scene, a fixed pivot, a rod, gravity for
 // one particle, and world.step() at a fixed dt.
+//
+// Hardware: any Arduino (a Nano here), nothing wired; Serial Monitor at
+// 115200 baud. On the PC: `make demo DEMO=examples/Pendulum`.
+//
+// What you should see: a table of time, angle and the small-angle theory's
+// angle, the two swinging between about -0.5 and 0.5 rad and slowly
+// drifting apart (the theory is for small swings), with an ASCII picture
+// of the pendulum every 2.5 s.
 #include <TinyParticle.h>
 #include <avr/sleep.h>
 
