@@ -11,7 +11,10 @@ namespace tinyparticle {
 
 // IsScalar<S>::value: true for Fixed<IntBits, FracBits> (Q16_16, Q24_8,
 // Q8_8...) and Float, the types with the interface the engine is written
-// against; false for everything else (float, double, int...).
+// against; false for everything else (float, double, int...). A type of
+// one's own with that interface (extras/doc/design.md, "The scalar
+// interface") is let in by a specialization with value = true, as the
+// benchmarks' host-only Double does.
 template <typename S>
 struct IsScalar {
   static const bool value = false;
