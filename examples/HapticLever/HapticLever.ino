@@ -17,7 +17,10 @@
 // Hardware: an Arduino Nano, two Interlink FSR 402 in 10 kOhm dividers on
 // A0 (pushed down) and A1 (pushed up), a 10 kOhm dial on A2, an FS0521HV
 // servo on pin 7 with its own 7.5 V supply; see extras/doc/wiring.md.
-// Needs the Servo library (Library Manager: "Servo").
+// Needs the Servo library (Library Manager: "Servo"). Without the device:
+// `make demo DEMO=examples/HapticLever` shows the frames of the lever let
+// go (nothing pushes), and `make hil` runs it on a simulated device with a
+// hand, servo and sensors (extras/hil).
 //
 // How the loop stays stable. The servo takes a new angle only at its next
 // 20 ms pulse and then lags about 10 ms more, so the mount that presses the
