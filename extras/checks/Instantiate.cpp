@@ -128,6 +128,28 @@ template void checkEngine<tinyparticle::Q24_8, 2>();
 template void checkEngine<tinyparticle::Float, 2>();
 template void checkEngine<tinyparticle::Float, 3>();
 
+// Text: print() and println() for each scalar and its vectors, and the
+// real-time loop's dt for each.
+struct CheckSink {
+  size_t write(uint8_t) { return 1; }
+};
+template <typename S>
+S checkPrinting() {
+  CheckSink sink;
+  tinyparticle::print(sink, S(1));
+  tinyparticle::print(sink, S(-1), 3);
+  tinyparticle::println(sink, tinyparticle::Vec2<S>(S(1), S(2)));
+  tinyparticle::println(sink, tinyparticle::Vec3<S>(S(1), S(2), S(3)), 2);
+  return tinyparticle::BasicRealTimeLoop<tinyparticle::CheckClock>(256, 0)
+      .dt<S>();
+}
+template tinyparticle::Q16_16 checkPrinting<tinyparticle::Q16_16>();
+template tinyparticle::Q24_8 checkPrinting<tinyparticle::Q24_8>();
+template tinyparticle::Q8_8 checkPrinting<tinyparticle::Q8_8>();
+template tinyparticle::Fixed<2, 30> checkPrinting<tinyparticle::Fixed<2, 30> >();
+template tinyparticle::Fixed<4, 12> checkPrinting<tinyparticle::Fixed<4, 12> >();
+template tinyparticle::Float checkPrinting<tinyparticle::Float>();
+
 // Math: every free function of the scalar interface, for each scalar.
 template <typename S>
 S checkScalarFunctions() {
