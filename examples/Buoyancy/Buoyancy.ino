@@ -62,11 +62,12 @@ void setup() {
   world.addDrag(S(3), S(0));  // N s/m: slow enough to settle in a few seconds
   world.addPlane(Vec2<S>(0.0, 1.0), S(0), S(0.2));  // the bottom
 
-  const S dt(1.0 / 256);
-  for (uint16_t i = 0; i <= 6 * 256; ++i) {
-    if (i % 384 == 0) {  // every 1.5 s
+  const uint16_t kStepsPerSecond = 256;
+  const S dt = S(1) / S(int(kStepsPerSecond));  // exact: 1/256 s
+  for (uint16_t i = 0; i <= 6 * kStepsPerSecond; ++i) {
+    if (i % (kStepsPerSecond * 3 / 2) == 0) {  // every 1.5 s
       Serial.print(F("t = "));
-      Serial.print(i / 256.0f, 1);
+      Serial.print(float(i) / kStepsPerSecond, 1);
       Serial.println(F(" s"));
       draw();
     }
