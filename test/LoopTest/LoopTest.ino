@@ -93,6 +93,9 @@ test(StepLength) {
   assertEqual((long) Loop(3, 0).dt<Q24_8>().raw(), 85L);
   assertEqual((long) Loop(1, 0).dt<Q8_8>().raw(), 256L);
   assertTrue(Loop(1000, 0).dt<Float>().toFloat() == 1.0f / 1000);
+  // 0 steps a second is taken as 1 (no division by zero): dt = 1 s.
+  assertEqual((int) Loop(0, 0).stepsPerSecond(), 1);
+  assertEqual((long) Loop(0, 0).dt<Q16_16>().raw(), 65536L);
 }
 
 // runSteps() steps the world as often as stepsDue() says, by dt<S>():

@@ -62,12 +62,13 @@ struct Reciprocal<Float> {
 template <class Clock>
 class BasicRealTimeLoop {
  public:
-  // stepsPerSecond: 1 / dt (> 0). framesPerSecond: 0 for no frames.
+  // stepsPerSecond: 1 / dt (> 0; 0 is taken as 1). framesPerSecond: 0 for
+  // no frames.
   BasicRealTimeLoop(uint16_t stepsPerSecond, uint16_t framesPerSecond,
                     uint8_t maxCatchUp = 8)
-      : mStepWhole(1000000UL / stepsPerSecond),
-        mStepFraction(uint16_t(1000000UL % stepsPerSecond)),
-        mStepsPerSecond(stepsPerSecond),
+      : mStepWhole(1000000UL / atLeastOne(stepsPerSecond)),
+        mStepFraction(uint16_t(1000000UL % atLeastOne(stepsPerSecond))),
+        mStepsPerSecond(atLeastOne(stepsPerSecond)),
         mFramePeriod(framesPerSecond == 0 ? 0 : 1000000UL / framesPerSecond),
         mMaxCatchUp(maxCatchUp == 0 ? 1 : maxCatchUp),
         mFractionSum(0),
@@ -156,6 +157,8 @@ class BasicRealTimeLoop {
   uint16_t stepsPerSecond() const { return mStepsPerSecond; }
 
  private:
+  static uint16_t atLeastOne(uint16_t n) { return n == 0 ? 1 : n; }
+
   // now >= t on a wrapping clock (valid for spans below 35 minutes).
   static bool reached(uint32_t now, uint32_t t) {
     return (now - t) < 0x80000000UL;
