@@ -63,7 +63,7 @@ void setup() {
   world.addPlane(Vec2<S>(0.0, 1.0), S(0), S(0.2));  // the bottom
 
   const uint16_t kStepsPerSecond = 256;
-  const S dt = S(1) / S(int(kStepsPerSecond));  // exact: 1/256 s
+  const S dt(1.0 / kStepsPerSecond);  // exact: 1/256 s, folded at compile time
   for (uint16_t i = 0; i <= 6 * kStepsPerSecond; ++i) {
     if (i % (kStepsPerSecond * 3 / 2) == 0) {  // every 1.5 s
       Serial.print(F("t = "));

@@ -37,7 +37,7 @@ void setup() {
   setupPendulum();
   Serial.println(F("t (s)  angle (rad)  small-angle theory"));
   const uint16_t kStepsPerSecond = 256;
-  const S dt = S(1) / S(int(kStepsPerSecond));  // exact: 1/256 s
+  const S dt(1.0 / kStepsPerSecond);  // exact: 1/256 s, folded at compile time
   const float omega = sqrt(9.81f / 1.0f);
   for (uint16_t i = 0; i <= 10 * kStepsPerSecond; ++i) {
     if (i % (kStepsPerSecond / 10) == 0) {  // about ten times a second
