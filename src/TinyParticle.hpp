@@ -9,6 +9,7 @@
 #include "TinyParticle/Math/FixedMath.hpp"
 #include "TinyParticle/Math/Float.hpp"
 #include "TinyParticle/Math/Vec.hpp"
+#include "TinyParticle/Text/Print.hpp"
 #include "TinyParticle/Platform/Arduino.hpp"
 #include "TinyParticle/Debug/Debug.hpp"
 #include "TinyParticle/Debug/Profile.hpp"

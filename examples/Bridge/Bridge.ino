@@ -6,6 +6,14 @@
 // It shows cables (they pull only when stretched to their length), fixed
 // particles, collisions between particles of different sizes and masses,
 // and the renderer's links ('.') between the particles.
+//
+// Hardware: any Arduino (a Nano here), nothing wired. On the PC:
+// `make demo DEMO=examples/Bridge`.
+//
+// What you should see: the two '+' posts with a dotted rope between them
+// that sags into a curve, a big 'O' that falls onto it, pushes it down,
+// bounces and comes to rest in the dip; at the end whether any contact
+// was dropped (the pool of 16 is sized so that none is).
 #include <TinyParticle.h>
 #include <avr/sleep.h>
 
@@ -44,7 +52,7 @@ void setup() {
 bool drawing = false;
 
 void loop() {
-  for (uint8_t n = timing.stepsDue(); n > 0; --n) world.step(Q16_16(1.0 / 256));
+  timing.runSteps(world);  // dt = 1/256 s, from timing
   if (!drawing && timing.frameDue()) drawing = true;
   while (drawing && Serial.availableForWrite() >= renderer.lineLength()) {
     drawing = !renderer.drawLine(world, Serial);

@@ -17,7 +17,10 @@
 // Hardware: an Arduino Nano, two Interlink FSR 402 in 10 kOhm dividers on
 // A0 (pushed down) and A1 (pushed up), a 10 kOhm dial on A2, an FS0521HV
 // servo on pin 7 with its own 7.5 V supply; see extras/doc/wiring.md.
-// Needs the Servo library (Library Manager: "Servo").
+// Needs the Servo library (Library Manager: "Servo"). Without the device:
+// `make demo DEMO=examples/HapticLever` shows the frames of the lever let
+// go (nothing pushes), and `make hil` runs it on a simulated device with a
+// hand, servo and sensors (extras/hil).
 //
 // How the loop stays stable. The servo takes a new angle only at its next
 // 20 ms pulse and then lags about 10 ms more, so the mount that presses the
@@ -143,9 +146,8 @@ HapticWorld world;
 LeverScene lever;
 Vec2<S> userForce;  // N, read by the custom force generator every step
 
-const uint16_t kStepsPerSecond = 1024;
-const S kDt(1.0 / 1024);
-RealTimeLoop timing(kStepsPerSecond, kPlotter ? 50 : 5);
+// 1,024 steps a second: timing is the one place that sets the step.
+RealTimeLoop timing(1024, kPlotter ? 50 : 5);
 // The lever's end reaches 0.48 m: x from -0.1 to 0.5 m, y from -0.3 m up.
 // 24 x 12 characters of 2.5 x 5 cm: a line takes about 11,000 cycles.
 AsciiRenderer<HapticWorld, 24, 12> renderer(S(-0.1), S(-0.3), S(0.025),
@@ -267,7 +269,8 @@ void prepareStep() {
   // Averages with weights 1/4 and 1/8 per step, as shifts.
   const S change = S::fromRaw((downNewtons - upNewtons - push).raw() >> 2);
   push += change;
-  pushRate += S::fromRaw((change.raw() * 1024L - pushRate.raw()) >> 3);
+  pushRate += S::fromRaw(
+      (change.raw() * long(timing.stepsPerSecond()) - pushRate.raw()) >> 3);
   S felt = push + pushRate * kForceLead;
   if (felt > kPushLimit) felt = kPushLimit;
   if (felt < -kPushLimit) felt = -kPushLimit;
@@ -404,9 +407,7 @@ void loop() {
     commandServo();
     return;
   }
-  uint8_t due = timing.stepsDue();
-  if (due > 0) {
-    for (; due > 0; --due) world.step(kDt);
+  if (timing.runSteps(world) > 0) {
     stepped = true;
     return;
   }

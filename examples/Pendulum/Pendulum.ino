@@ -1,10 +1,18 @@
 // Pendulum: a 1 kg bob on a 1 m rod, released at 0.5 rad. The whole scene
-// is the first dozen lines below (the same as in the README); the sketch
-// then prints its angle and the small-angle theory's angle ten times a
-// second, and draws it now and then, for 10 simulated seconds.
+// is the first dozen lines below; the sketch then prints its angle and the
+// small-angle theory's angle ten times a second, and draws it now and then,
+// for 10 simulated seconds.
 //
 // It shows a World sized for the scene, a fixed pivot, a rod, gravity for
 // one particle, and world.step() at a fixed dt.
+//
+// Hardware: any Arduino (a Nano here), nothing wired; Serial Monitor at
+// 115200 baud. On the PC: `make demo DEMO=examples/Pendulum`.
+//
+// What you should see: a table of time, angle and the small-angle theory's
+// angle, the two swinging between about -0.5 and 0.5 rad and slowly
+// drifting apart (the theory is for small swings), with an ASCII picture
+// of the pendulum every 2.5 s.
 #include <TinyParticle.h>
 #include <avr/sleep.h>
 
@@ -28,20 +36,23 @@ void setup() {
   while (!Serial);
   setupPendulum();
   Serial.println(F("t (s)  angle (rad)  small-angle theory"));
-  const S dt(1.0 / 256);
+  const uint16_t kStepsPerSecond = 256;
+  const S dt(1.0 / kStepsPerSecond);  // exact: 1/256 s, folded at compile time
   const float omega = sqrt(9.81f / 1.0f);
-  for (uint16_t i = 0; i <= 10 * 256; ++i) {
-    if (i % 26 == 0) {  // about ten times a second
+  for (uint16_t i = 0; i <= 10 * kStepsPerSecond; ++i) {
+    if (i % (kStepsPerSecond / 10) == 0) {  // about ten times a second
       const Vec2<S>& p = world.particle(bob)->position;
       float angle = atan2(p.x, -p.y).toFloat();
-      float t = i / 256.0f;
+      float t = float(i) / kStepsPerSecond;
       Serial.print(t, 2);
       Serial.print(F("   "));
       Serial.print(angle, 4);
       Serial.print(F("   "));
       Serial.println(0.5f * cos(omega * t), 4);
     }
-    if (i % 640 == 0) renderer.draw(world, Serial);  // every 2.5 s
+    if (i % (kStepsPerSecond * 5 / 2) == 0) {  // every 2.5 s
+      renderer.draw(world, Serial);
+    }
     world.step(dt);
   }
   Serial.println(F("(The theory is for small swings: at 0.5 rad the real"));

@@ -42,9 +42,6 @@ template class World<Q24_8, 2, 4, 4, 4, 4>;
 template class World<Q24_8, 3, 4, 4, 4, 4>;
 template class World<Float, 2, 4, 4, 4, 4>;
 template class World<Float, 3, 4, 4, 4, 4>;
-template class World<Q16_16, 2, 1>;
-template class World<Float, 3, 1>;
-template class World<Q16_16, 2, 0, 0, 0, 0>;
 template class AsciiRenderer<World<Q16_16, 2, 4, 4, 4, 4> >;
 template class AsciiRenderer<World<Float, 3, 4, 4, 4, 4>, 80, 25>;
 template class AsciiRenderer<World<Q16_16, 2, 1> >;
@@ -98,11 +95,60 @@ void checkEngine() {
   bare.step(S(1.0 / 256));
 }
 
+// Worlds with empty pools: every call that does not add to a missing pool
+// (those do not compile, by design: extras/checks/fail/No*Slot.cpp), so no
+// explicit instantiation of the whole class here.
+template <typename W>
+void checkEmptyPools() {
+  static W world;
+  typename W::Vec at;
+  const tinyparticle::ParticleId id = world.idOf(0);
+  world.particle(id);
+  world.applyForce(id, at);
+  world.removeParticle(id);
+  world.removeForce(tinyparticle::ForceId());
+  world.force(tinyparticle::ForceId());
+  world.constraint(tinyparticle::ConstraintId());
+  world.removeConstraint(tinyparticle::ConstraintId());
+  world.setLength(tinyparticle::ConstraintId(), typename W::Scalar(1));
+  world.step(typename W::Scalar(1.0 / 256));
+  world.setIterationCap(uint8_t(world.particleCount() + world.contactCount() +
+                                world.stats().peakContacts + world.error()));
+  world.clearError();
+  world.clear();
+}
+
+template void checkEmptyPools<tinyparticle::World<tinyparticle::Q16_16, 2, 1> >();
+template void checkEmptyPools<tinyparticle::World<tinyparticle::Float, 3, 1> >();
+template void checkEmptyPools<tinyparticle::World<tinyparticle::Q16_16, 2, 0, 0, 0, 0> >();
+
 template void checkEngine<tinyparticle::Q16_16, 2>();
 template void checkEngine<tinyparticle::Q16_16, 3>();
 template void checkEngine<tinyparticle::Q24_8, 2>();
 template void checkEngine<tinyparticle::Float, 2>();
 template void checkEngine<tinyparticle::Float, 3>();
+
+// Text: print() and println() for each scalar and its vectors, and the
+// real-time loop's dt for each.
+struct CheckSink {
+  size_t write(uint8_t) { return 1; }
+};
+template <typename S>
+S checkPrinting() {
+  CheckSink sink;
+  tinyparticle::print(sink, S(1));
+  tinyparticle::print(sink, S(-1), 3);
+  tinyparticle::println(sink, tinyparticle::Vec2<S>(S(1), S(2)));
+  tinyparticle::println(sink, tinyparticle::Vec3<S>(S(1), S(2), S(3)), 2);
+  return tinyparticle::BasicRealTimeLoop<tinyparticle::CheckClock>(256, 0)
+      .dt<S>();
+}
+template tinyparticle::Q16_16 checkPrinting<tinyparticle::Q16_16>();
+template tinyparticle::Q24_8 checkPrinting<tinyparticle::Q24_8>();
+template tinyparticle::Q8_8 checkPrinting<tinyparticle::Q8_8>();
+template tinyparticle::Fixed<2, 30> checkPrinting<tinyparticle::Fixed<2, 30> >();
+template tinyparticle::Fixed<4, 12> checkPrinting<tinyparticle::Fixed<4, 12> >();
+template tinyparticle::Float checkPrinting<tinyparticle::Float>();
 
 // Math: every free function of the scalar interface, for each scalar.
 template <typename S>

@@ -84,6 +84,46 @@ test(NextStep) {
   assertEqual((unsigned long) timing.microsToNextStep(), 0UL);
 }
 
+// dt<S>() is 1 / stepsPerSecond to the nearest unit: 1/256 s is 256 units
+// of 2^-16 exactly; 1/1000 s is 65.536 units, so 66; 1/3 s in Q24_8 is
+// 85.33 units, so 85; Float's is the float nearest to 1/1000.
+test(StepLength) {
+  assertEqual((long) Loop(256, 0).dt<Q16_16>().raw(), 256L);
+  assertEqual((long) Loop(1000, 0).dt<Q16_16>().raw(), 66L);
+  assertEqual((long) Loop(3, 0).dt<Q24_8>().raw(), 85L);
+  assertEqual((long) Loop(1, 0).dt<Q8_8>().raw(), 256L);
+  assertTrue(Loop(1000, 0).dt<Float>().toFloat() == 1.0f / 1000);
+  // 0 steps a second is taken as 1 (no division by zero): dt = 1 s.
+  assertEqual((int) Loop(0, 0).stepsPerSecond(), 1);
+  assertEqual((long) Loop(0, 0).dt<Q16_16>().raw(), 65536L);
+}
+
+// runSteps() steps the world as often as stepsDue() says, by dt<S>():
+// 10 ms at 256 steps a second covers the steps due at 0, 3.9 and 7.8 ms.
+struct CountingWorld {
+  typedef Q16_16 Scalar;
+  uint8_t steps;
+  Q16_16 last;
+  CountingWorld() : steps(0), last() {}
+  void step(Q16_16 dt) {
+    ++steps;
+    last = dt;
+  }
+};
+
+test(RunSteps) {
+  FakeClock::now = 0;
+  Loop timing(256, 0);
+  timing.start();
+  CountingWorld world;
+  FakeClock::now = 10000;
+  assertEqual((int) timing.runSteps(world), 3);
+  assertEqual((int) world.steps, 3);
+  assertEqual((long) world.last.raw(), 256L);
+  assertEqual((int) timing.runSteps(world), 0);
+  assertEqual((int) world.steps, 3);
+}
+
 void setup() {
 #if !defined(EPOXY_DUINO)
   delay(1000);

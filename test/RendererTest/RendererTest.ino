@@ -28,7 +28,7 @@ typedef BoolType<false> FalseType;
 
 template <typename S>
 struct Checks {
-  typedef World<S, 2, 3, 0, 1> W;
+  typedef World<S, 2, 3, 0, 1, 1> W;  // a cable needs a contact slot
   typedef typename W::Vec V;
   // 20 x 10 characters over 2 m x 2 m: cells of 0.1 m x 0.2 m.
   typedef AsciiRenderer<W, 20, 10> R;

@@ -52,6 +52,36 @@ struct Checks {
     return bounced * 10 + w.stats().iterations;
   }
 
+  // The peak: five balls on the floor ask for five contacts (three kept,
+  // two dropped); a later step without contacts leaves the peak at five;
+  // clear() starts it again from 0. Returns the three peaks, as digits.
+  static int peaks() {
+    W w;
+    int contacts = 0;
+    (void)overflowInto(w, &contacts);
+    const int first = w.stats().peakContacts;
+    for (uint8_t i = 0; i < 5; ++i) {
+      w.particleAt(i).position.y = S(1);  // far above the floor, at rest
+      w.particleAt(i).velocity = V();
+    }
+    w.step(S(1.0 / 256));
+    const int later = w.stats().contacts == 0 ? w.stats().peakContacts : 9;
+    w.clear();
+    return first * 100 + later * 10 + w.stats().peakContacts;
+  }
+
+  static int overflowInto(W& w, int* stored) {
+    V up(0.0, 1.0);
+    w.addPlane(up, S(0), S(0.5));
+    for (uint8_t i = 0; i < 5; ++i) {
+      V where(0.2 * i, 0.1);
+      ParticleId id = w.addParticle(where, S(1), S(0.1));
+      w.particle(id)->velocity.y = S(-1 - int(i));
+    }
+    w.step(S(1.0 / 256));
+    *stored = w.stats().contacts;
+    return w.stats().dropped;
+  }
 };
 
 // Five contacts, room for three: two dropped and counted, the error bit
@@ -73,6 +103,11 @@ test(ContactOverflow_Float) {
   assertEqual(kept, 0x1C);
   assertTrue(flagged);
 }
+
+// stats().peakContacts: 5 (kept and dropped), still 5 after a step
+// without contacts, 0 after clear().
+test(PeakContacts_Q16_16) { assertEqual(Checks<Q16_16>::peaks(), 550); }
+test(PeakContacts_Float) { assertEqual(Checks<Float>::peaks(), 550); }
 
 // One iteration allowed, two contacts: one ball bounces (10), 1 iteration.
 test(IterationCap_Q16_16) { assertEqual(Checks<Q16_16>::capped(), 11); }

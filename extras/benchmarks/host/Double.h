@@ -69,6 +69,12 @@ class Double {
   double mValue;
 };
 
+// A scalar for World (Math/ScalarTraits.hpp).
+template <>
+struct IsScalar<Double> {
+  static const bool value = true;
+};
+
 inline Double fabs(Double x) { return Double(::fabs(x.toDouble())); }
 inline Double fmin(Double a, Double b) { return b < a ? b : a; }
 inline Double fmax(Double a, Double b) { return a < b ? b : a; }

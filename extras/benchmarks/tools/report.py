@@ -89,7 +89,9 @@ def ops_markdown(rows, tools, quick):
         "angles in [-pi, pi); atan2(y, x) takes the same pairs as the other "
         "binary operations; `*_turns` take a uniform binary angle (65536 = one turn); "
         "vector components range from 2^-(F/2) to below sqrt(max/N). "
-        "`seed_Q16.16` is the seed report's arithmetic (64-bit intermediates, "
+        "`seed_Q16.16` is the arithmetic of the seed report (D. G. McIlvaney, "
+        "*A Haptic Interface: Design and Construction*, University of Victoria, "
+        "2017: 64-bit intermediates, "
         "bit-by-bit square root, table atan2), rebuilt in "
         "`AutoBenchmark/SeedFixed.h`.",
         "",
@@ -576,7 +578,8 @@ def readme_summary(out_dir, tools):
                                             fmt_err(cell[(t, o)]["max_abs_err"]))
                                if (t, o) in cell else "" for t in types])
         lines += ["Cycles per call (worst absolute error); `seed_Q16.16` is the "
-                  "seed report's arithmetic, measured in the same run:", ""]
+                  "arithmetic of the seed report ([McIlvaney 2017](#references)), "
+                  "measured in the same run:", ""]
         lines += md_table(["operation"] + types, body)
         lines += ["", "![Worst error against cycles per call]"
                   "(extras/benchmarks/ops.svg)", ""]

@@ -133,7 +133,12 @@ struct StepStats {
   uint8_t contacts;    // contacts generated (at most the pool capacity)
   uint8_t dropped;     // contacts that did not fit (the least severe go)
   uint8_t iterations;  // resolver iterations used
-  constexpr StepStats() : contacts(0), dropped(0), iterations(0) {}
+  // The most contacts one step has asked for (kept + dropped, at most 255)
+  // since the world was made or cleared: a contact pool at least this large
+  // would have dropped none.
+  uint8_t peakContacts;
+  constexpr StepStats()
+      : contacts(0), dropped(0), iterations(0), peakContacts(0) {}
 };
 
 }  // namespace tinyparticle

@@ -3,9 +3,13 @@
 //
 //   RealTimeLoop timing(256, 10);   // dt = 1/256 s, 10 frames per second
 //   void loop() {
-//     for (uint8_t n = timing.stepsDue(); n > 0; --n) world.step(kDt);
+//     timing.runSteps(world);       // the steps that are due, of dt each
 //     if (timing.frameDue()) renderer.draw(world, Serial);
 //   }
+//
+// The loop is the one place that knows the step: runSteps() steps the world
+// by dt<Scalar>(), and a sketch that needs dt elsewhere (a stiff spring's
+// gains, its own stepping) asks timing.dt<S>() rather than writing it again.
 //
 // Compared with the seed (section 3.3), whose step length followed the time
 // the last frame took: the step is always the same dt, so the simulation
@@ -22,19 +26,49 @@
 
 #include <stdint.h>
 
+#include "../Math/Fixed.hpp"
+#include "../Math/Float.hpp"
 #include "../Platform/Clock.hpp"
 
 namespace tinyparticle {
 
+namespace detail {
+
+// 1 / n (n > 0) in the scalar: the nearest unit for fixed point (exact
+// when n is a power of two up to 2^FracBits), in integer steps only.
+template <typename S>
+struct Reciprocal;
+template <uint8_t IntBits, uint8_t FracBits>
+struct Reciprocal<Fixed<IntBits, FracBits> > {
+  static Fixed<IntBits, FracBits> of(uint16_t n) {
+    typedef Fixed<IntBits, FracBits> S;
+    uint32_t one = uint32_t(1) << FracBits;
+    // A power of two (the usual rates) by shifts: a 32-bit division costs
+    // some 600 cycles on an AVR, several percent of a step.
+    if ((n & (n - 1)) == 0 && n <= one) {
+      for (; n > 1; n = uint16_t(n >> 1)) one >>= 1;
+      return S::fromRaw(typename S::Raw(one));
+    }
+    return S::fromRaw(typename S::Raw((one + n / 2) / n));
+  }
+};
+template <>
+struct Reciprocal<Float> {
+  static Float of(uint16_t n) { return Float(1.0f / float(n)); }
+};
+
+}  // namespace detail
+
 template <class Clock>
 class BasicRealTimeLoop {
  public:
-  // stepsPerSecond: 1 / dt (> 0). framesPerSecond: 0 for no frames.
+  // stepsPerSecond: 1 / dt (> 0; 0 is taken as 1). framesPerSecond: 0 for
+  // no frames.
   BasicRealTimeLoop(uint16_t stepsPerSecond, uint16_t framesPerSecond,
                     uint8_t maxCatchUp = 8)
-      : mStepWhole(1000000UL / stepsPerSecond),
-        mStepFraction(uint16_t(1000000UL % stepsPerSecond)),
-        mStepsPerSecond(stepsPerSecond),
+      : mStepWhole(1000000UL / atLeastOne(stepsPerSecond)),
+        mStepFraction(uint16_t(1000000UL % atLeastOne(stepsPerSecond))),
+        mStepsPerSecond(atLeastOne(stepsPerSecond)),
         mFramePeriod(framesPerSecond == 0 ? 0 : 1000000UL / framesPerSecond),
         mMaxCatchUp(maxCatchUp == 0 ? 1 : maxCatchUp),
         mFractionSum(0),
@@ -99,12 +133,32 @@ class BasicRealTimeLoop {
     return reached(now, mNextStep) ? 0 : mNextStep - now;
   }
 
+  // The step, dt = 1 / stepsPerSecond s, in the scalar S: the nearest
+  // value for fixed point (exact for powers of two: 1/256 s in Q16_16).
+  template <typename S>
+  S dt() const {
+    return detail::Reciprocal<S>::of(mStepsPerSecond);
+  }
+
+  // Runs the steps that are due now (stepsDue()) on `world`, each of
+  // dt<Scalar>(); returns how many ran (0 to maxCatchUp).
+  template <class W>
+  uint8_t runSteps(W& world) {
+    const uint8_t due = stepsDue();
+    if (due == 0) return 0;
+    const typename W::Scalar step = dt<typename W::Scalar>();
+    for (uint8_t n = due; n > 0; --n) world.step(step);
+    return due;
+  }
+
   uint32_t steps() const { return mSteps; }
   // Steps that were due but never run, because the sketch fell behind.
   uint32_t slippedSteps() const { return mSlipped; }
   uint16_t stepsPerSecond() const { return mStepsPerSecond; }
 
  private:
+  static uint16_t atLeastOne(uint16_t n) { return n == 0 ? 1 : n; }
+
   // now >= t on a wrapping clock (valid for spans below 35 minutes).
   static bool reached(uint32_t now, uint32_t t) {
     return (now - t) < 0x80000000UL;

@@ -41,6 +41,7 @@
 #include "../Contacts/RodSolver.hpp"
 #include "../Debug/Debug.hpp"
 #include "../Debug/Profile.hpp"
+#include "../Math/ScalarTraits.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
@@ -73,6 +74,7 @@ class World
           void (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
                    const Scaler<S>&, S),
           S, (kConstraints > 0)> {
+  static_assert(IsScalar<S>::value, TINYPARTICLE_SCALAR_MESSAGE);
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
                     kConstraints < kAnchorIndex && kContacts < kAnchorIndex,
@@ -137,6 +139,9 @@ class World
   }
 
   ParticleId addWithInverseMass(const Vec& position, S inverseMass, S radius) {
+    static_assert(kParticles > 0,
+                  "this World has no particle slot: World<S, Dim, particles, "
+                  "forces, constraints, contacts> needs particles > 0");
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
       if (p.inUse()) continue;
@@ -359,11 +364,13 @@ class World
   }
   // A cable: at most `length` (m) apart; it bounces with `restitution`.
   ConstraintId addCable(ParticleId a, ParticleId b, S length, S restitution) {
+    requireContacts();
     return addLink(a, b, length, restitution,
                    &CableConstraint<World, false>::generate);
   }
   ConstraintId addCable(ParticleId a, const Vec& anchor, S length,
                         S restitution) {
+    requireContacts();
     return addAnchoredLink(a, anchor, length, restitution,
                            &CableConstraint<World, true>::generate);
   }
@@ -388,6 +395,7 @@ class World
   // dot(normal, position) - radius >= offset. The normal need not be unit
   // length (it is normalised here); along an axis it takes a fast path.
   ConstraintId addPlane(const Vec& normal, S offset, S restitution) {
+    requireContacts();
     Vec unit = normal;
     if (!unit.normalize()) {
       mError |= WorldError::kBadArgument;
@@ -413,6 +421,7 @@ class World
   // The walls of the box low <= x <= high (2 Dim axis-aligned planes, facing
   // inwards). False if the pool could not take them all.
   bool addBox(const Vec& low, const Vec& high, S restitution) {
+    requireContacts();
     bool ok = true;
     for (uint8_t k = 0; k < Dim; ++k) {
       ok = addAxisPlane(k, true, low[k], restitution).isValid() && ok;
@@ -423,6 +432,7 @@ class World
 
   // Collisions between all pairs of colliding particles.
   ConstraintId addCollisions(S restitution) {
+    requireContacts();
     ConstraintId id;
     ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
     if (c == nullptr) return id;
@@ -485,6 +495,10 @@ class World
         if (c.generate != nullptr) c.generate(*this, c, i);
       }
       mStats.contacts = mContactCount;
+      const uint16_t asked = uint16_t(mContactCount + mStats.dropped);
+      if (asked > mStats.peakContacts) {
+        mStats.peakContacts = asked > 255 ? uint8_t(255) : uint8_t(asked);
+      }
       TINYPARTICLE_PROFILE_END(kProfileContacts);
       TINYPARTICLE_PROFILE_BEGIN(kProfileResolve);
       uint16_t cap = mIterationCap;
@@ -705,6 +719,15 @@ class World
   }
 
  private:
+  // Cables, planes and collisions work through contacts: a world without a
+  // contact slot would drop every one of them (rods take none).
+  static void requireContacts() {
+    static_assert(kContacts > 0,
+                  "this World has no contact slot: World<S, Dim, particles, "
+                  "forces, constraints, contacts> needs contacts > 0 for "
+                  "cables, planes and collisions (rods need none)");
+  }
+
   bool isLive(ParticleId id) const {
     return id.index < kParticles &&
            liveSlot(particleAt(id.index), id) != nullptr;
@@ -852,6 +875,10 @@ class World
   }
 
   ForceSlot* newForce(ForceId& id, uint8_t a, uint8_t b) {
+    static_assert(kForces > 0,
+                  "this World has no force slot: World<S, Dim, particles, "
+                  "forces, constraints, contacts> needs forces > 0 for "
+                  "gravity, drag, springs, buoyancy and custom forces");
     for (uint8_t i = 0; i < kForces; ++i) {
       ForceSlot& f = forceAt(i);
       if (f.inUse()) continue;
@@ -876,6 +903,10 @@ class World
 
   ConstraintSlot* newConstraint(ConstraintId& id, uint8_t a, uint8_t b,
                                 S restitution) {
+    static_assert(kConstraints > 0,
+                  "this World has no constraint slot: World<S, Dim, "
+                  "particles, forces, constraints, contacts> needs "
+                  "constraints > 0 for rods, cables, planes and collisions");
     for (uint8_t i = 0; i < kConstraints; ++i) {
       ConstraintSlot& c = constraintAt(i);
       if (c.inUse()) continue;

@@ -1,0 +1,12 @@
+// Must NOT compile: gravity added to a world without a force slot
+// (World<S, Dim, particles, forces = 0>).
+// expect: static assert.*no force slot.*forces > 0
+#include "TinyParticle.hpp"
+using namespace tinyparticle;
+
+World<Q16_16, 2, 1> world;
+
+void setup() {
+  world.addParticle(Vec2<Q16_16>(0.0, 1.0), Q16_16(1));
+  world.addGravity();
+}
