@@ -29,8 +29,13 @@ enum : uint8_t {
 // its symbol name: link-time optimization must keep it, under that name.
 #if defined(__AVR__) && defined(__GNUC__)
 #define TINYPARTICLE_ASM_VISIBLE __attribute__((used, externally_visible))
+// The same without `used`, for a table that must stay out of sketches that
+// do not read it: kept only by the references of the C++ that uses it
+// (kSin with `used` was linked into a sketch that only calls atan2).
+#define TINYPARTICLE_ASM_NAMED __attribute__((externally_visible))
 #else
 #define TINYPARTICLE_ASM_VISIBLE
+#define TINYPARTICLE_ASM_NAMED
 #endif
 
 namespace detail {

@@ -34,7 +34,7 @@ struct TrigTables {
 
 template <typename Unused>
 const uint16_t TrigTables<Unused>::kSin[129] TINYPARTICLE_PROGMEM
-    TINYPARTICLE_ASM_VISIBLE = {
+    TINYPARTICLE_ASM_NAMED = {
     0, 804, 1608, 2412, 3216, 4019, 4821, 5623,
     6424, 7224, 8022, 8820, 9616, 10411, 11204, 11996,
     12785, 13573, 14359, 15143, 15924, 16703, 17479, 18253,
