@@ -1,13 +1,14 @@
 // Hand-written AVR code for Fixed, used when TINYPARTICLE_AVR_ASM is 1 (the
 // default on AVR chips with MUL):
-// - Q16.16 multiply, divide and square root, and the core of atan2 for
-//   every format;
+// - Q16.16 multiply, divide and square root, the core of atan2 for every
+//   format, and Q16.16 sin and cos of radians (Q8.8 through them);
 // - Q24.8 multiply, divide and square root and Q8.8 divide and square root
 //   through the Q16.16 routines (exact rescalings).
 // Each routine returns exactly what the portable code returns, flags
 // included: multiply, divide and square root the reference* functions of
-// Fixed.hpp, atan2 atan2UnitsPortable in FixedMath.hpp (and the add and
-// subtract in Fixed.hpp referenceAdd and referenceSubtract). `make
+// Fixed.hpp, atan2 atan2UnitsPortable and sin sinUnitsOfRadians<16> in
+// FixedMath.hpp (and the add and subtract in Fixed.hpp referenceAdd and
+// referenceSubtract). `make
 // verify-asm` proves it on the simulated ATmega328P, for every class of
 // input that each routine's code tells apart (table entries, shifts,
 // corrections, saturation edges, with +-3 neighbours) and 10^6 to 10^7
