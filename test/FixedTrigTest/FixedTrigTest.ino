@@ -163,9 +163,9 @@ test(q16_16RadiansAtTableBoundaries) {
           const uint32_t turns = k < 2 ? k : 5211u + k;
           // Raw units per turn 2 pi 2^16 = 411774 + 54545 / 2^16, per
           // boundary 2 pi 2^7 = 804 + 16235 / 2^16.
-          const uint32_t x = turns * 411774u + j * 804u +
-                             ((turns * 54545u + j * 16235u + 32768u) >> 16) +
-                             uint32_t(int32_t(d));
+          const uint32_t x = turns * 411774u + uint32_t(j) * 804u +
+              ((turns * 54545u + uint32_t(j) * 16235u + 32768u) >> 16) +
+              uint32_t(int32_t(d));
           if (x > 0x7fffffffu) continue;
           const T a = T::fromRaw(negative ? -int32_t(x) : int32_t(x));
           const Exact v = Trig<T>::value(a);

@@ -1108,8 +1108,8 @@ void enumerateSin(bool full, V& v) {
     const uint8_t kFirst = full ? 0 : uint8_t(j % 5);
     for (uint8_t k = kFirst; k < (full ? 5 : kFirst + 1); ++k) {
       const uint32_t turns = k < 2 ? k : 5211u + k;
-      const uint32_t x0 = turns * 411774u + j * 804u +
-                          ((turns * 54545u + j * 16235u + 32768u) >> 16);
+      const uint32_t x0 = turns * 411774u + uint32_t(j) * 804u +
+          ((turns * 54545u + uint32_t(j) * 16235u + 32768u) >> 16);
       for (uint8_t d = 0; d <= 6; ++d) {
         const uint32_t x = x0 + d - 3;
         if (x > 0x7fffffffu) continue;
