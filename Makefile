@@ -51,6 +51,13 @@ sizes:
 	@$(SCRIPTS)/setup-packages demo
 	@$(SCRIPTS)/run-tests --jobs $(JOBS) --only examples
 
+# Where a sketch's flash goes, by part of the library (extras/scripts/size-report).
+SKETCH ?= $(DEMO)
+.PHONY: size-report
+size-report:
+	@$(SCRIPTS)/setup-packages demo
+	@$(SCRIPTS)/size-report $(SKETCH)
+
 # Benchmarks live in extras/benchmarks (their Makefile does the work).
 bench:
 	@$(SCRIPTS)/setup-packages bench

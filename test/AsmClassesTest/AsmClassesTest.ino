@@ -8,7 +8,8 @@
 // On the host (no assembly there, so the first check is trivial): the
 // reference has its exact property: correctly rounded
 // product, quotient and root (exact integer inequalities), saturation and
-// flags; atan2 within 6 units of 2^-16 rad of the exact angle.
+// flags; atan2 within 6 units of 2^-16 rad of the exact angle, sin and
+// cos within 3 units of 2^-16.
 #include <AUnit.h>
 #include <TinyParticle.h>
 #include <TinyParticle/Testing/AsmClasses.hpp>
@@ -118,6 +119,7 @@ test(addQ32) { assertEqual(checkRoutine(kAsmAddQ32, 20u), (uint32_t) 0); }
 test(subtractQ32) { assertEqual(checkRoutine(kAsmSubQ32, 21u), (uint32_t) 0); }
 test(addQ16) { assertEqual(checkRoutine(kAsmAddQ16, 22u), (uint32_t) 0); }
 test(subtractQ16) { assertEqual(checkRoutine(kAsmSubQ16, 23u), (uint32_t) 0); }
+test(sinCosQ16) { assertEqual(checkRoutine(kAsmSinQ16, 24u), (uint32_t) 0); }
 
 // The inputs the square root once got wrong (issue 8), by value.
 test(onceWrongSquareRoots) {

@@ -139,6 +139,56 @@ test(q16_16SinCosRadians) {
 #endif
 }
 
+// sin and cos at every kSin entry boundary of every quadrant (turns
+// j 2^15 / 2^24, j = 0..512), +-3 raw steps, at 0 and 1 whole turns and
+// (host) at the last whole turns of the range, 5213..5215, both signs:
+// within 1e-4. On the host also the range reduction: the 24-bit turns
+// within 4 units of 2^-24 turn of the exact angle (FixedMath.hpp's bound).
+// (The Nano takes one turn count, two steps and one sign per boundary:
+// float sin is slow there.)
+test(q16_16RadiansAtTableBoundaries) {
+  typedef Q16_16 T;
+  Exact worst = 0, worstTurns = 0;
+  for (uint16_t j = 0; j <= 512; ++j) {
+#if defined(EPOXY_DUINO)
+    for (uint8_t k = 0; k < 5; ++k) {
+      for (int8_t d = -3; d <= 3; ++d) {
+        for (uint8_t negative = 0; negative < 2; ++negative) {
+#else
+    for (uint8_t k = uint8_t(j % 2); k == j % 2; ++k) {
+      for (int8_t d = -1; d <= 0; ++d) {
+        for (uint8_t negative = uint8_t(j % 3 == 0); negative == (j % 3 == 0);
+             ++negative) {
+#endif
+          const uint32_t turns = k < 2 ? k : 5211u + k;
+          // Raw units per turn 2 pi 2^16 = 411774 + 54545 / 2^16, per
+          // boundary 2 pi 2^7 = 804 + 16235 / 2^16.
+          const uint32_t x = turns * 411774u + uint32_t(j) * 804u +
+              ((turns * 54545u + uint32_t(j) * 16235u + 32768u) >> 16) +
+              uint32_t(int32_t(d));
+          if (x > 0x7fffffffu) continue;
+          const T a = T::fromRaw(negative ? -int32_t(x) : int32_t(x));
+          const Exact v = Trig<T>::value(a);
+          const Exact es = Trig<T>::distance(sin(a), sin(v));
+          const Exact ec = Trig<T>::distance(cos(a), cos(v));
+          if (es > worst) worst = es;
+          if (ec > worst) worst = ec;
+#if defined(EPOXY_DUINO)
+          Exact t = v / kTwoPi * Exact(16777216.0);
+          t -= Exact(16777216.0) * floor(t / Exact(16777216.0));
+          Exact e = Exact(tinyparticle::detail::turns24Of(a)) - t;
+          if (e > Exact(8388608.0)) e -= Exact(16777216.0);
+          if (e < -Exact(8388608.0)) e += Exact(16777216.0);
+          if (fabs(e) > worstTurns) worstTurns = fabs(e);
+#endif
+        }
+      }
+    }
+  }
+  assertLess(worst, Exact(1e-4));
+  assertLessOrEqual(worstTurns, Exact(4));
+}
+
 test(q16_16Atan2) {
   uint16_t turns;
   assertLess(Trig<Q16_16>::atan2Error(&turns), Exact(1e-4));

@@ -1,13 +1,14 @@
 // Hand-written AVR code for Fixed, used when TINYPARTICLE_AVR_ASM is 1 (the
 // default on AVR chips with MUL):
-// - Q16.16 multiply, divide and square root, and the core of atan2 for
-//   every format;
+// - Q16.16 multiply, divide and square root, the core of atan2 for every
+//   format, and Q16.16 sin and cos of radians (Q8.8 through them);
 // - Q24.8 multiply, divide and square root and Q8.8 divide and square root
 //   through the Q16.16 routines (exact rescalings).
 // Each routine returns exactly what the portable code returns, flags
 // included: multiply, divide and square root the reference* functions of
-// Fixed.hpp, atan2 atan2UnitsPortable in FixedMath.hpp (and the add and
-// subtract in Fixed.hpp referenceAdd and referenceSubtract). `make
+// Fixed.hpp, atan2 atan2UnitsPortable and sin sinUnitsOfRadians<16> in
+// FixedMath.hpp (and the add and subtract in Fixed.hpp referenceAdd and
+// referenceSubtract). `make
 // verify-asm` proves it on the simulated ATmega328P, for every class of
 // input that each routine's code tells apart (table entries, shifts,
 // corrections, saturation edges, with +-3 neighbours) and 10^6 to 10^7
@@ -49,13 +50,15 @@ TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
 
 #define TINYPARTICLE_AVR_FLAGS \
   "_ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE"
-// TrigTables<>::kRecip, kSqrt and kAtan, likewise.
+// TrigTables<>::kRecip, kSqrt, kAtan and kSin, likewise.
 #define TINYPARTICLE_AVR_RECIP \
   "_ZN12tinyparticle6detail10TrigTablesIvE6kRecipE"
 #define TINYPARTICLE_AVR_SQRT \
   "_ZN12tinyparticle6detail10TrigTablesIvE5kSqrtE"
 #define TINYPARTICLE_AVR_ATAN \
   "_ZN12tinyparticle6detail10TrigTablesIvE5kAtanE"
+#define TINYPARTICLE_AVR_SIN \
+  "_ZN12tinyparticle6detail10TrigTablesIvE4kSinE"
 
 // Pieces of assembly text that several routines share, as string macros:
 // they expand to the very same instructions in each routine (no call, no
@@ -1186,6 +1189,165 @@ __attribute__((naked, noinline)) inline int32_t avrAtan2Units(int32_t,
       "    pop  r17\n"
       "    ret\n"
 
+      ::: "memory");
+}
+
+// ---------------------------------------------------------------------------
+// sin of a Q16.16 angle in radians, in units of 2^-16 (cos: quarter =
+// 0x40, a quarter turn added): the steps of FixedMath.hpp's
+// sinUnitsOfRadians<16> in assembly (the same result bit for bit, proven by
+// `make verify-asm`).
+// 1. |x| (r25:r22 = m3..m0) times C = 0x28BE60DB93 (floor(2^64 / (2 pi))
+//    >> 24), bytes 4..6 of the product, summed column by column as in
+//    turns24FromRadians: the high bytes of column 3 with the carry estimate
+//    3, columns 4 and 5, the low bytes of column 6; thirteen MULs, grouped
+//    by byte of C. Negated for x < 0; a quarter turn added for cos.
+// 2. The quadrant's angle p, mirrored in the 2nd and 4th; entry p >> 15 of
+//    kSin and its 15-bit fraction; the top (p = 2^22) is exactly one.
+// 3. kSin[i] + (rise f + 2^14) >> 15 from four MULs; negated in the
+//    lower half turn.
+// ---------------------------------------------------------------------------
+__attribute__((naked, noinline)) inline int32_t avrSinUnitsQ16(int32_t,
+                                                                uint8_t) {
+  asm volatile(
+      // T = x < 0; r25:r22 = |x|; r19 = 0; the sum of bytes 4..6 in
+      // r30:r27:r26.
+      "    bst  r25, 7\n"
+      TINYPARTICLE_AVR_MAGNITUDE32("r25", "r24", "r23", "r22", "1")
+      "    clr  r19\n"
+      "    ldi  r26, 3\n"
+      "    clr  r27\n"
+      "    clr  r30\n"
+      "    ldi  r18, 0xbe\n"          // c3
+      "    mul  r22, r18\n"           // m0 c3: column 3
+      "    add  r26, r1\n"
+      "    adc  r27, r19\n"
+      "    adc  r30, r19\n"
+      "    mul  r23, r18\n"           // m1 c3: column 4
+      "    add  r26, r0\n"
+      "    adc  r27, r1\n"
+      "    adc  r30, r19\n"
+      "    mul  r24, r18\n"           // m2 c3: column 5
+      "    add  r27, r0\n"
+      "    adc  r30, r1\n"
+      "    mul  r25, r18\n"           // m3 c3: column 6
+      "    add  r30, r0\n"
+      "    ldi  r18, 0x60\n"          // c2
+      "    mul  r23, r18\n"           // m1 c2: column 3
+      "    add  r26, r1\n"
+      "    adc  r27, r19\n"
+      "    adc  r30, r19\n"
+      "    mul  r24, r18\n"           // m2 c2: column 4
+      "    add  r26, r0\n"
+      "    adc  r27, r1\n"
+      "    adc  r30, r19\n"
+      "    mul  r25, r18\n"           // m3 c2: column 5
+      "    add  r27, r0\n"
+      "    adc  r30, r1\n"
+      "    ldi  r18, 0xdb\n"          // c1
+      "    mul  r24, r18\n"           // m2 c1: column 3
+      "    add  r26, r1\n"
+      "    adc  r27, r19\n"
+      "    adc  r30, r19\n"
+      "    mul  r25, r18\n"           // m3 c1: column 4
+      "    add  r26, r0\n"
+      "    adc  r27, r1\n"
+      "    adc  r30, r19\n"
+      "    ldi  r18, 0x93\n"          // c0
+      "    mul  r25, r18\n"           // m3 c0: column 3
+      "    add  r26, r1\n"
+      "    adc  r27, r19\n"
+      "    adc  r30, r19\n"
+      "    ldi  r18, 0x28\n"          // c4
+      "    mul  r22, r18\n"           // m0 c4: column 4
+      "    add  r26, r0\n"
+      "    adc  r27, r1\n"
+      "    adc  r30, r19\n"
+      "    mul  r23, r18\n"           // m1 c4: column 5
+      "    add  r27, r0\n"
+      "    adc  r30, r1\n"
+      "    mul  r24, r18\n"           // m2 c4: column 6
+      "    add  r30, r0\n"
+      // The turns t in r30:r27:r26: negated for x < 0 (24 bits), plus the
+      // quarter turn; the top byte kept in r20 for the quadrant and sign.
+      "    brtc 2f\n"
+      "    com  r30\n"
+      "    com  r27\n"
+      "    neg  r26\n"
+      "    sbci r27, 0xff\n"
+      "    sbci r30, 0xff\n"
+      "2:\n"
+      "    add  r20, r30\n"
+      // p = (r30 & 0x3f, r27, r26); 2nd and 4th quadrants: 2^22 - p.
+      "    mov  r30, r20\n"
+      "    andi r30, 0x3f\n"
+      "    sbrs r20, 6\n"
+      "    rjmp 3f\n"
+      "    com  r30\n"
+      "    com  r27\n"
+      "    neg  r26\n"
+      "    sbci r27, 0xff\n"
+      "    sbci r30, 0xff\n"
+      "    subi r30, 0xc0\n"           // + 0x40
+      "    cpi  r30, 0x40\n"
+      "    breq 5f\n"                  // p = 2^22: exactly one
+      "3:\n"
+      // i = p >> 15 in r30, f1 = bits 8..14 of p in r27, f0 in r26.
+      "    lsl  r27\n"
+      "    rol  r30\n"
+      "    lsr  r27\n"
+      "    lsl  r30\n"
+      "    clr  r31\n"
+      "    subi r30, lo8(-(" TINYPARTICLE_AVR_SIN "))\n"
+      "    sbci r31, hi8(-(" TINYPARTICLE_AVR_SIN "))\n"
+      "    lpm  r22, Z+\n"             // y0 in r23:r22
+      "    lpm  r23, Z+\n"
+      "    lpm  r24, Z+\n"
+      "    lpm  r25, Z\n"
+      "    sub  r24, r22\n"            // rise in r25:r24 (r25 < 4)
+      "    sbc  r25, r23\n"
+      // m = r0 f1 + r1 f0 + (r0 f0 >> 8) + 0x40 in r21:r18 (below 2^16).
+      "    mul  r24, r26\n"
+      "    mov  r18, r1\n"
+      "    clr  r21\n"
+      "    subi r18, 0xc0\n"           // + 0x40 (16 bits)
+      "    sbci r21, 0xff\n"
+      "    mul  r24, r27\n"
+      "    add  r18, r0\n"
+      "    adc  r21, r1\n"
+      "    mul  r25, r26\n"
+      "    add  r18, r0\n"
+      "    adc  r21, r1\n"
+      // m >> 7 in r18:r21 (r18 the high byte).
+      "    lsl  r18\n"
+      "    rol  r21\n"
+      "    ldi  r18, 0\n"
+      "    adc  r18, r18\n"
+      // + 2 r1 f1, then y0 + that in r25:r22.
+      "    mul  r25, r27\n"
+      "    lsl  r0\n"
+      "    rol  r1\n"
+      "    add  r21, r0\n"
+      "    adc  r18, r1\n"
+      "    clr  r1\n"
+      "    add  r22, r21\n"
+      "    adc  r23, r18\n"
+      "    ldi  r24, 0\n"
+      "    adc  r24, r24\n"
+      "    clr  r25\n"
+      "4:\n"
+      // Lower half turn: negative.
+      "    sbrs r20, 7\n"
+      "    ret\n"
+      TINYPARTICLE_AVR_NEGATE32("r25", "r24", "r23", "r22")
+      "    ret\n"
+      "5:\n"
+      "    clr  r1\n"
+      "    ldi  r22, 0\n"
+      "    ldi  r23, 0\n"
+      "    ldi  r24, 1\n"
+      "    ldi  r25, 0\n"
+      "    rjmp 4b\n"
       ::: "memory");
 }
 

@@ -8,11 +8,13 @@
 // The trigonometry works on 16-bit fractions internally and reads its
 // tables from program memory (TrigTables.hpp: 258 bytes each for sin, atan
 // and the reciprocal; a table is linked only when something uses it).
-// On AVR, atan2 runs the same steps in assembly (FixedAvr.hpp).
+// On AVR, atan2 and the Q16.16 (and Q8.8) sin and cos run the same steps
+// in assembly (FixedAvr.hpp), with the same results bit for bit.
 //
-// Speed: prefer the binary-angle functions sinTurns<S>(a) / cosTurns<S>(a)
-// (Turns.hpp): a radian argument first has to be multiplied by 1 / (2 pi)
-// with enough bits to stay exact for any representable angle.
+// Speed: the binary-angle functions sinTurns<S>(a) / cosTurns<S>(a)
+// (Turns.hpp) are the cheapest; a radian argument first has to be
+// multiplied by 1 / (2 pi) with enough bits for any representable angle
+// (thirteen 8 x 8 products on AVR). extras/benchmarks/ops.md has the cycles.
 #pragma once
 
 #include <stdint.h>
@@ -109,24 +111,53 @@ inline int32_t sinUnits(uint16_t turns) {
   return (turns & 0x8000u) ? -int32_t(v) : int32_t(v);
 }
 
+// Byte j of v.
+inline uint8_t byteOf(uint64_t v, uint8_t j) { return uint8_t(v >> (8 * j)); }
+// a * b as 16 bits: one MUL on AVR.
+TINYPARTICLE_ALWAYS_INLINE uint16_t product8(uint8_t a, uint8_t b) {
+#if defined(__AVR__)
+  // Hide the operands' origin: gcc would otherwise merge neighbouring
+  // 8 x 8 products back into 16 x 16 ones (three MULs and more registers).
+  asm("" : "+r"(a));
+#endif
+  return uint16_t(uint16_t(a) * b);
+}
+
 // The same for an angle with 24 bits per turn (the radian functions keep
-// 8 more bits of the angle than a binary angle has).
+// 8 more bits of the angle than a binary angle has), with the same steps
+// in 16-bit arithmetic and 8 x 8 products (single MULs on AVR): entry
+// p >> 15 of the quadrant's angle p, interpolated over its 15-bit fraction
+// f as kSin[i] + (rise f + 2^14) >> 15.
 template <typename Unused = void>
 inline int32_t sinUnits24(uint32_t turns24) {
-  uint32_t p = turns24 & 0x3fffffu;
-  if (turns24 & 0x400000u) p = 0x400000u - p;
-  uint32_t v;
-  if (p == 0x400000u) {
-    v = 65536;
-  } else {
-    const uint8_t i = uint8_t(p >> 15);
-    const uint16_t fraction = uint16_t(p & 0x7fffu);
-    const uint16_t y0 = platform::readFlashU16(&TrigTables<Unused>::kSin[i]);
-    const uint16_t y1 = platform::readFlashU16(&TrigTables<Unused>::kSin[i + 1]);
-    const uint16_t rise = uint16_t(y1 - y0);
-    v = y0 + ((uint32_t(rise) * fraction + 16384u) >> 15);
+  const uint8_t top = uint8_t(turns24 >> 16);
+  // p = (high, low): the angle within the quadrant, 22 bits; mirrored
+  // (2^22 - p) in the 2nd and 4th quadrants.
+  uint8_t high = uint8_t(top & 0x3fu);
+  uint16_t low = uint16_t(turns24);
+  if (top & 0x40u) {
+    high = uint8_t(0x40u - high - (low != 0 ? 1u : 0u));
+    low = uint16_t(0u - low);
   }
-  return (turns24 & 0x800000u) ? -int32_t(v) : int32_t(v);
+  uint32_t v;
+  if (high == 0x40u) {
+    v = 65536;  // the top: exactly one
+  } else {
+    const uint8_t i = uint8_t(uint8_t(high << 1) | uint8_t(low >> 15));
+    const uint8_t f0 = uint8_t(low), f1 = uint8_t(uint8_t(low >> 8) & 0x7fu);
+    const uint16_t y0 = platform::readFlashU16(&TrigTables<Unused>::kSin[i]);
+    const uint16_t y1 =
+        platform::readFlashU16(&TrigTables<Unused>::kSin[i + 1]);
+    // kSin[128] is stored as 0: the 16-bit difference still comes out right.
+    const uint16_t rise = uint16_t(y1 - y0);  // below 2^10
+    const uint8_t r0 = uint8_t(rise), r1 = uint8_t(rise >> 8);
+    // rise f + 2^14 = r1 f1 2^16 + 2^8 m + (the low byte of r0 f0), with m
+    // below 2^16 (r1 < 4, f1 < 2^7), so the result is 2 r1 f1 + m >> 7.
+    const uint16_t m = uint16_t(product8(r0, f1) + product8(r1, f0) +
+                                (product8(r0, f0) >> 8) + 0x40u);
+    v = y0 + uint32_t(uint16_t((product8(r1, f1) << 1) + (m >> 7)));
+  }
+  return (top & 0x80u) ? -int32_t(v) : int32_t(v);
 }
 
 // The high 32 bits of a * b + 2^31 (a rounded 32 x 32 multiply), from four
@@ -144,18 +175,51 @@ inline uint32_t multiplyHigh32Rounded(uint32_t a, uint32_t b) {
   return uint32_t(a1) * b1 + (mid1 >> 16) + (mid2 >> 16) + (middle >> 16);
 }
 
-// round(|raw| / 2^F / (2 pi) * 2^24) mod 2^24, with the sign applied: the
-// angle in 24-bit turns. floor(2^64 / (2 pi)) = 0x28BE60DB9391054A; it is
-// scaled to C = that >> (8 + F), and the turn count is bits 32..55 of
-// |raw| * C. Both halves of C fit 32 bits for every format, and its
-// truncation errs by less than half a unit of the result.
+// The angle in 24-bit turns: |raw| / 2^F / (2 pi) * 2^24 mod 2^24, with the
+// sign applied. floor(2^64 / (2 pi)) = 0x28BE60DB9391054A is scaled to
+// C = that >> (8 + F) (its truncation errs by less than half a unit of the
+// result), and the turns are bits 32..55 of |raw| * C, summed byte by byte
+// from the 8 x 8 products of the bytes of |raw| (m0..m3) and of C (c0..c7)
+// (single MULs on AVR, 16-bit sums). Products below 2^32 are left out and
+// replaced by their typical carry (kCarryEstimate, with the rounding half
+// unit): the result is within 4 units of 2^-24 turn (1.5e-6 rad) of
+// |raw| / 2^F / (2 pi), which FixedTrigTest checks.
 template <uint8_t F>
 inline uint32_t turns24FromRadians(uint32_t magnitude, bool negative) {
   const uint64_t kInverseTwoPi = 0x28BE60DB9391054Aull;
   const uint64_t c = kInverseTwoPi >> (8 + F);
-  const uint32_t high = uint32_t(c >> 32);
-  const uint32_t low = uint32_t(c);
-  uint32_t t = magnitude * high + multiplyHigh32Rounded(magnitude, low);
+  const uint8_t m0 = uint8_t(magnitude), m1 = uint8_t(magnitude >> 8);
+  const uint8_t m2 = uint8_t(magnitude >> 16), m3 = uint8_t(magnitude >> 24);
+  // The products of weight 2^24 (only their high bytes count), 2^32,
+  // 2^40 and 2^48 (only their low bytes count).
+  const uint16_t p30 = product8(m0, byteOf(c, 3));
+  const uint16_t p31 = product8(m1, byteOf(c, 2));
+  const uint16_t p32 = product8(m2, byteOf(c, 1));
+  const uint16_t p33 = product8(m3, byteOf(c, 0));
+  const uint16_t p40 = product8(m0, byteOf(c, 4));
+  const uint16_t p41 = product8(m1, byteOf(c, 3));
+  const uint16_t p42 = product8(m2, byteOf(c, 2));
+  const uint16_t p43 = product8(m3, byteOf(c, 1));
+  const uint16_t p50 = product8(m0, byteOf(c, 5));
+  const uint16_t p51 = product8(m1, byteOf(c, 4));
+  const uint16_t p52 = product8(m2, byteOf(c, 3));
+  const uint16_t p53 = product8(m3, byteOf(c, 2));
+  const uint8_t p6 = uint8_t(
+      product8(m0, byteOf(c, 6)) + product8(m1, byteOf(c, 5)) +
+      product8(m2, byteOf(c, 4)) + product8(m3, byteOf(c, 3)));
+  // Bytes 4, 5 and 6 of the sum, each with the carry of the one below.
+  const uint8_t kCarryEstimate = 3;
+  uint16_t sum = uint16_t(kCarryEstimate + (p30 >> 8) + (p31 >> 8) +
+                          (p32 >> 8) + (p33 >> 8) + uint8_t(p40) +
+                          uint8_t(p41) + uint8_t(p42) + uint8_t(p43));
+  const uint8_t t0 = uint8_t(sum);
+  sum = uint16_t((sum >> 8) + (p40 >> 8) + (p41 >> 8) + (p42 >> 8) +
+                 (p43 >> 8) + uint8_t(p50) + uint8_t(p51) + uint8_t(p52) +
+                 uint8_t(p53));
+  const uint8_t t1 = uint8_t(sum);
+  const uint8_t t2 = uint8_t((sum >> 8) + (p50 >> 8) + (p51 >> 8) +
+                             (p52 >> 8) + (p53 >> 8) + p6);
+  uint32_t t = (uint32_t(t2) << 16) | uint16_t((uint16_t(t1) << 8) | t0);
   if (negative) t = 0u - t;
   return t & 0xffffffu;
 }
@@ -165,6 +229,49 @@ inline uint32_t turns24Of(Fixed<I, F> x) {
   typedef Fixed<I, F> T;
   return turns24FromRadians<F>(T::magnitude(x.raw()), x.raw() < 0);
 }
+
+// sin of a radian angle (quarter = 0) or cos (quarter = 0x40: a quarter
+// turn, added to the top byte of the 24-bit turns), in units of 2^-16,
+// for a raw value with F fraction bits and its magnitude.
+template <uint8_t F, typename U>
+inline int32_t sinUnitsOfRadians(uint32_t magnitude, bool negative,
+                                 uint8_t quarter) {
+  return sinUnits24<U>(turns24FromRadians<F>(magnitude, negative) +
+                       (uint32_t(quarter) << 16));
+}
+
+// The same for a Q16.16 raw value; on AVR in assembly (avrSinUnitsQ16,
+// FixedAvr.hpp: the same result bit for bit).
+template <typename U>
+inline int32_t sinUnitsQ16(int32_t raw, uint8_t quarter) {
+#if TINYPARTICLE_AVR_ASM_MUL
+  // The assembly reads kSin by name: keep the table.
+  asm volatile("" : : "m"(TrigTables<U>::kSin[0]));
+  return avrSinUnitsQ16(raw, quarter);
+#else
+  const uint32_t magnitude =
+      raw < 0 ? uint32_t(0) - uint32_t(raw) : uint32_t(raw);
+  return sinUnitsOfRadians<16, U>(magnitude, raw < 0, quarter);
+#endif
+}
+
+// A format with at most 16 fraction bits and at most 16 integer bits
+// (Q16.16, Q8.8) takes the Q16.16 steps on its value scaled exactly to
+// Q16.16; the others (Q24.8) their own.
+template <uint8_t I, uint8_t F>
+struct SinOfRadians {
+  typedef typename Fixed<I, F>::Raw Raw;
+  static const bool kAsQ16 = F <= 16 && I <= 16;
+  template <typename U>
+  static int32_t units(Raw raw, uint8_t quarter) {
+    if (kAsQ16) {
+      const int32_t scale = int32_t(1) << (kAsQ16 ? 16 - F : 0);
+      return sinUnitsQ16<U>(int32_t(raw) * scale, quarter);
+    }
+    return sinUnitsOfRadians<F, U>(Fixed<I, F>::magnitude(raw), raw < 0,
+                                   quarter);
+  }
+};
 
 // ---- atan2 -----------------------------------------------------------------
 
@@ -289,12 +396,12 @@ struct TurnsOf<Fixed<I, F> > {
 template <uint8_t I, uint8_t F>
 inline Fixed<I, F> sin(Fixed<I, F> x) {
   return detail::fixedFromUnits16<I, F>(
-      detail::sinUnits24(detail::turns24Of(x)));
+      detail::SinOfRadians<I, F>::template units<void>(x.raw(), 0));
 }
 template <uint8_t I, uint8_t F>
 inline Fixed<I, F> cos(Fixed<I, F> x) {
   return detail::fixedFromUnits16<I, F>(
-      detail::sinUnits24(detail::turns24Of(x) + 0x400000u));
+      detail::SinOfRadians<I, F>::template units<void>(x.raw(), 0x40u));
 }
 
 // The angle of the point (x, y) in radians, in [-pi, pi], like C's atan2

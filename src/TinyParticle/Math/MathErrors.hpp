@@ -29,8 +29,14 @@ enum : uint8_t {
 // its symbol name: link-time optimization must keep it, under that name.
 #if defined(__AVR__) && defined(__GNUC__)
 #define TINYPARTICLE_ASM_VISIBLE __attribute__((used, externally_visible))
+// The same without `used`, for the tables (TrigTables.hpp), which must stay
+// out of sketches that do not read them: each is kept by the C++ that reads
+// it or that calls the assembly reading it (with `used`, a sketch calling
+// only sin linked all four tables, 708 bytes more).
+#define TINYPARTICLE_ASM_NAMED __attribute__((externally_visible))
 #else
 #define TINYPARTICLE_ASM_VISIBLE
+#define TINYPARTICLE_ASM_NAMED
 #endif
 
 namespace detail {

@@ -33,7 +33,8 @@ struct TrigTables {
 };
 
 template <typename Unused>
-const uint16_t TrigTables<Unused>::kSin[129] TINYPARTICLE_PROGMEM = {
+const uint16_t TrigTables<Unused>::kSin[129] TINYPARTICLE_PROGMEM
+    TINYPARTICLE_ASM_NAMED = {
     0, 804, 1608, 2412, 3216, 4019, 4821, 5623,
     6424, 7224, 8022, 8820, 9616, 10411, 11204, 11996,
     12785, 13573, 14359, 15143, 15924, 16703, 17479, 18253,
@@ -55,7 +56,7 @@ const uint16_t TrigTables<Unused>::kSin[129] TINYPARTICLE_PROGMEM = {
 
 template <typename Unused>
 const uint16_t TrigTables<Unused>::kAtan[129] TINYPARTICLE_PROGMEM
-    TINYPARTICLE_ASM_VISIBLE = {
+    TINYPARTICLE_ASM_NAMED = {
     0, 512, 1024, 1536, 2047, 2559, 3070, 3580,
     4091, 4600, 5110, 5618, 6126, 6633, 7140, 7645,
     8150, 8653, 9156, 9657, 10158, 10657, 11155, 11652,
@@ -77,7 +78,7 @@ const uint16_t TrigTables<Unused>::kAtan[129] TINYPARTICLE_PROGMEM
 
 template <typename Unused>
 const uint16_t TrigTables<Unused>::kRecip[129] TINYPARTICLE_PROGMEM
-    TINYPARTICLE_ASM_VISIBLE = {
+    TINYPARTICLE_ASM_NAMED = {
     65535, 64519, 63519, 62533, 61563, 60608, 59666, 58739,
     57825, 56925, 56037, 55163, 54300, 53451, 52613, 51786,
     50972, 50168, 49376, 48594, 47823, 47062, 46311, 45571,
@@ -99,7 +100,7 @@ const uint16_t TrigTables<Unused>::kRecip[129] TINYPARTICLE_PROGMEM
 
 template <typename Unused>
 const uint8_t TrigTables<Unused>::kSqrt[192] TINYPARTICLE_PROGMEM
-    TINYPARTICLE_ASM_VISIBLE = {
+    TINYPARTICLE_ASM_NAMED = {
     128, 128, 129, 130, 131, 132, 133, 134, 135, 136, 137, 138,
     139, 140, 141, 142, 143, 144, 144, 145, 146, 147, 148, 149,
     150, 150, 151, 152, 153, 154, 155, 155, 156, 157, 158, 159,

@@ -59,6 +59,7 @@ enum AsmRoutine : uint8_t {
   kAsmSubQ32,   // 32-bit saturating subtract
   kAsmAddQ16,   // 16-bit saturating add (Q8.8)
   kAsmSubQ16,   // 16-bit saturating subtract
+  kAsmSinQ16,   // Q16.16 sin and cos of radians (avrSinUnitsQ16); b = 1: cos
   kAsmRoutineCount
 };
 
@@ -85,6 +86,7 @@ inline uint16_t familySize(uint8_t routine, uint8_t family) {
   static const uint16_t kDiv8[] = {2, 4, 5, 0};
   static const uint16_t kAtan[] = {5, 3, 4, 8, 2, 3, 128, 2, 128, 0};
   static const uint16_t kAdd[] = {TP_ADD_FAMILIES, 0};
+  static const uint16_t kSin[] = {4, 4, 2, 128, 0};
   const uint16_t* sizes;
   switch (routine) {
     case kAsmMulQ16: sizes = kMul; break;
@@ -94,6 +96,7 @@ inline uint16_t familySize(uint8_t routine, uint8_t family) {
     case kAsmDivQ24: sizes = kDiv24; break;
     case kAsmDivQ8: sizes = kDiv8; break;
     case kAsmAtan2: sizes = kAtan; break;
+    case kAsmSinQ16: sizes = kSin; break;
     default: sizes = kAdd; break;
   }
   for (uint8_t f = 0; f < family; ++f) {
@@ -522,6 +525,30 @@ TINYPARTICLE_NOINLINE void classifyAtan2(int32_t y, int32_t x, C& c) {
   }
 }
 
+// ---- sin and cos of radians (avrSinUnitsQ16) --------------------------------
+// a = the Q16.16 angle, b = 0 for sin, 1 for cos (a quarter turn added).
+// Families: 0 function and sign: (b != 0) * 2 + (a < 0); 1 quadrant of the
+// 24-bit turns (the top two bits: mirrored in 1 and 3, negative in 2 and
+// 3); 2 the top of the quarter wave (p = 2^22, exactly one): no / yes;
+// 3 kSin index (not at the top).
+inline uint8_t sinQuarter(int32_t b) { return b != 0 ? 0x40u : 0u; }
+
+template <typename C>
+TINYPARTICLE_NOINLINE void classifySin(int32_t a, int32_t b, C& c) {
+  c.hit(0, uint16_t((b != 0) * 2 + (a < 0)));
+  const uint32_t t = (detail::turns24FromRadians<16>(magnitude32(a), a < 0) +
+                      (uint32_t(sinQuarter(b)) << 16)) & 0xffffffu;
+  c.hit(1, uint16_t(t >> 22));
+  uint32_t p = t & 0x3fffffu;
+  if (t & 0x400000u) p = 0x400000u - p;
+  if (p == 0x400000u) {
+    c.hit(2, 1);
+  } else {
+    c.hit(2, 0);
+    c.hit(3, uint16_t(p >> 15));
+  }
+}
+
 // ---- Add and subtract (addOverflows, subtractOverflows) ----------------
 // Families: 0 signs; 1 outcome: ordinary / within 3 of a limit /
 // overflow upwards / overflow downwards.
@@ -596,6 +623,7 @@ TINYPARTICLE_NOINLINE void classify(uint8_t routine, int32_t a, int32_t b, C& c)
       classifyScaled(routine, a, b, c);
       break;
     case kAsmAtan2: classifyAtan2(a, b, c); break;
+    case kAsmSinQ16: classifySin(a, b, c); break;
     case kAsmAddQ32: classifyAdd(a, b, false, INT32_MIN, INT32_MAX, c); break;
     case kAsmSubQ32: classifyAdd(a, b, true, INT32_MIN, INT32_MAX, c); break;
     case kAsmAddQ16:
@@ -689,6 +717,19 @@ TINYPARTICLE_NOINLINE bool atan2Close(int32_t y, int32_t x, int32_t units) {
   return e <= Exact(kAtan2ToleranceUnits) && e >= -Exact(kAtan2ToleranceUnits);
 }
 
+// sin and cos in units of 2^-16 within this many units of the exact value
+// (4.6e-5; FixedTrigTest holds Q16.16 sin and cos within 1e-4).
+const int32_t kSinToleranceUnits = 3;
+
+template <typename Exact>
+TINYPARTICLE_NOINLINE bool sinClose(int32_t x, int32_t b, int32_t units) {
+  const Exact angle = Exact(x) / Exact(65536);
+  const Exact exact = (b != 0 ? Exact(::cos(angle)) : Exact(::sin(angle))) *
+                      Exact(65536);
+  const Exact e = Exact(units) - exact;
+  return e <= Exact(kSinToleranceUnits) && e >= -Exact(kSinToleranceUnits);
+}
+
 // Whether r (with flags fl) is what routine must return for (a, b), by
 // exact properties rather than the reference's formula.
 TINYPARTICLE_NOINLINE inline bool referenceHasProperty(uint8_t routine,
@@ -720,6 +761,13 @@ TINYPARTICLE_NOINLINE inline bool referenceHasProperty(uint8_t routine,
       property = fl == 0 && atan2Close<float>(a, b, r);
 #else
       property = fl == 0 && atan2Close<double>(a, b, r);
+#endif
+      break;
+    case kAsmSinQ16:
+#if defined(__AVR__)
+      property = fl == 0 && sinClose<float>(a, b, r);
+#else
+      property = fl == 0 && sinClose<double>(a, b, r);
 #endif
       break;
     case kAsmAddQ32:
@@ -759,6 +807,7 @@ TINYPARTICLE_NOINLINE inline AsmOutcome runAsmRoutine(uint8_t routine, int32_t a
     case kAsmAtan2:
       o.fast = detail::atan2Units(a, b, magnitude32(a), magnitude32(b));
       break;
+    case kAsmSinQ16: o.fast = detail::sinUnitsQ16<void>(a, sinQuarter(b)); break;
     case kAsmAddQ32: o.fast = Q16_16::add(a, b); break;
     case kAsmSubQ32: o.fast = Q16_16::subtract(a, b); break;
     case kAsmAddQ16: o.fast = Q8_8::add(a16, b16); break;
@@ -776,6 +825,10 @@ TINYPARTICLE_NOINLINE inline AsmOutcome runAsmRoutine(uint8_t routine, int32_t a
     case kAsmDivQ8: o.reference = Q8_8::referenceDivide(a16, b16); break;
     case kAsmSqrtQ8: o.reference = Q8_8::referenceSquareRoot(a16); break;
     case kAsmAtan2: o.reference = detail::atan2UnitsPortable<void>(a, b); break;
+    case kAsmSinQ16:
+      o.reference = detail::sinUnitsOfRadians<16, void>(magnitude32(a), a < 0,
+                                                        sinQuarter(b));
+      break;
     case kAsmAddQ32: o.reference = Q16_16::referenceAdd(a, b); break;
     case kAsmSubQ32: o.reference = Q16_16::referenceSubtract(a, b); break;
     case kAsmAddQ16: o.reference = Q8_8::referenceAdd(a16, b16); break;
@@ -1036,6 +1089,39 @@ void enumerateAtan2(bool full, V& v) {
   }
 }
 
+// sin and cos: the edge values (full only: the inputs below reach every
+// class); then each kSin entry boundary of each quadrant, at turns
+// k + j 2^15 / 2^24 (j = 0..512, quadrant edges at multiples of 128) for
+// k = 0, 1 and the last whole turns that fit (5213 to 5215: the range
+// reduction at both ends of the range), the nearest raw angle +-3, both
+// signs, sin and cos (full); one k, sign and function each (subset).
+template <typename V>
+void enumerateSin(bool full, V& v) {
+  if (full) {
+    for (uint16_t i = 0; i < 2 * kEdges32; ++i) v(edge32(i / 2), i & 1);
+  }
+  // Raw units (2^-16 rad) per turn, 2 pi 2^16 = 411774 + 54545 / 2^16, and
+  // per kSin entry (2^15 / 2^24 turn), 2 pi 2^7 = 804 + 16235 / 2^16: 32-bit
+  // arithmetic, within 0.01 of the exact raw angle.
+  for (uint16_t j = 0; j <= 4 * 128; ++j) {  // entry boundary j 2^15
+    // k: whole turns; s: sign (bit 0) and function (bit 1).
+    const uint8_t kFirst = full ? 0 : uint8_t(j % 5);
+    for (uint8_t k = kFirst; k < (full ? 5 : kFirst + 1); ++k) {
+      const uint32_t turns = k < 2 ? k : 5211u + k;
+      const uint32_t x0 = turns * 411774u + uint32_t(j) * 804u +
+          ((turns * 54545u + uint32_t(j) * 16235u + 32768u) >> 16);
+      for (uint8_t d = 0; d <= 6; ++d) {
+        const uint32_t x = x0 + d - 3;
+        if (x > 0x7fffffffu) continue;
+        const uint8_t sFirst = full ? 0 : uint8_t((j + k + d) & 3);
+        for (uint8_t s = sFirst; s < (full ? 4 : sFirst + 1); ++s) {
+          v(withSign(x, s & 1), int32_t(s >> 1));
+        }
+      }
+    }
+  }
+}
+
 template <typename V>
 void visitWitnesses(uint8_t routine, V& v);
 
@@ -1065,6 +1151,7 @@ void enumerateStructured(uint8_t routine, bool full, V& v) {
       edgePairs(full, true, v);
       break;
     case kAsmAtan2: enumerateAtan2(full, v); break;
+    case kAsmSinQ16: enumerateSin(full, v); break;
     default: edgePairs(full, false, v); break;
   }
 }
@@ -1145,6 +1232,14 @@ inline void randomInput(uint8_t routine, AsmRandom& random, int32_t* a,
     case kAsmSqrtQ16: *a = randomRootArgument(random, 16, INT32_MAX); break;
     case kAsmSqrtQ24: *a = randomRootArgument(random, 8, INT32_MAX); break;
     case kAsmSqrtQ8: *a = randomRootArgument(random, 8, INT16_MAX); break;
+    case kAsmSinQ16: {
+      // Half log-uniform, half uniform over the whole range; sin or cos.
+      const uint32_t choice = random.next();
+      *a = (choice & 0x200u) ? signedFrom(random.next())
+                             : randomLogUniform(random, 32, uint16_t(choice));
+      *b = int32_t((choice >> 10) & 1u);
+      break;
+    }
     default: {
       const uint8_t bits =
           (routine == kAsmDivQ8 || routine == kAsmAddQ16 || routine == kAsmSubQ16)
@@ -1218,7 +1313,11 @@ void visitWitnesses(uint8_t routine, V& v) {
       {kAsmDivQ16, -3968252, -65},      // word 1: one more
       {kAsmDivQ16, -2008372920, 287652137},  // word 2: one more
       {kAsmSqrtQ16, 935325026, 0},      // third byte: one more
-      {kAsmSqrtQ24, 1284382403, 0}};    // third byte: one more
+      {kAsmSqrtQ24, 1284382403, 0},     // third byte: one more
+      // sin and cos: turns exactly at the top of the quarter wave
+      // (searched near multiples of pi / 2 on the host).
+      {kAsmSinQ16, 1750043, 0}, {kAsmSinQ16, -1750043, 0},
+      {kAsmSinQ16, 2470649, 1}, {kAsmSinQ16, -2470649, 1}};
   for (uint8_t i = 0; i < sizeof(kList) / sizeof(kList[0]); ++i) {
     if (platform::readFlashU8(&kList[i].routine) != routine) continue;
     v(int32_t(platform::readFlashU32(
