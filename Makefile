@@ -13,7 +13,7 @@ JOBS ?= 2
 # The demo example (DEMO=examples/Name runs another one).
 DEMO ?= examples/BouncingBalls
 
-.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil verify-asm clean
+.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil verify-asm fuzz clean
 
 help:
 	@sed -n '3,4p' Makefile | sed 's/^# *//'
@@ -75,6 +75,12 @@ hil:
 verify-asm:
 	@$(SCRIPTS)/setup-packages test
 	@$(SCRIPTS)/verify-asm --jobs $(JOBS) $(VERIFY_ASM_FLAGS)
+
+# The world fuzzer (extras/fuzz) for FUZZ_SECONDS (default 300) seconds;
+# its corpus stays in build/fuzz/corpus, findings in build/fuzz/crash-*.
+fuzz:
+	@$(SCRIPTS)/setup-packages fuzz
+	@$(MAKE) --no-print-directory -C extras/fuzz run
 
 clean:
 	rm -rf build

@@ -1,0 +1,31 @@
+// The stability suite of issue 13, Float: the rod cases (the undamped
+// pendulum, a chain of 8 rods, a 1:1000 mass ratio on a rod, a rod of
+// zero length and tiny vectors). StabilitySuiteFloatTest has the others. The
+// cases and bounds are in src/TinyParticle/Testing/StabilityCases.hpp.
+#include <AUnit.h>
+#include <TinyParticle.h>
+#include <TinyParticle/Testing/StabilityCases.hpp>
+
+using aunit::TestRunner;
+using tinyparticle::testing::StabilityCases;
+
+typedef StabilityCases<Float> Cases;
+
+// 10^5 steps: 390 s of swing.
+test(Pendulum_Float) {
+  TestRunner::setTimeout(0);
+  assertTrue(Cases::checkPendulum(100000UL));
+}
+test(Chain_Float) { assertTrue(Cases::checkChain()); }
+test(MassRatioRod_Float) { assertTrue(Cases::checkMassRatioRod()); }
+test(TinyVectors_Float) { assertTrue(Cases::checkTinyVectors()); }
+
+void setup() {
+#if !defined(EPOXY_DUINO)
+  delay(1000);
+#endif
+  Serial.begin(115200);
+  while (!Serial);
+}
+
+void loop() { TestRunner::run(); }
