@@ -13,7 +13,7 @@ JOBS ?= 2
 # The demo example (DEMO=examples/Name runs another one).
 DEMO ?= examples/BouncingBalls
 
-.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil verify-asm fuzz clean
+.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil verify-asm fuzz stability clean
 
 help:
 	@sed -n '3,4p' Makefile | sed 's/^# *//'
@@ -81,6 +81,14 @@ verify-asm:
 fuzz:
 	@$(SCRIPTS)/setup-packages fuzz
 	@$(MAKE) --no-print-directory -C extras/fuzz run
+
+# The stability suite (test/StabilitySuite*Test) on the host and the
+# simulated Nano, then its table: extras/stability/results.csv and
+# extras/stability/README.md.
+stability:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/run-tests --jobs $(JOBS) --only host,target --filter StabilitySuite; \
+	status=$$?; extras/stability/collect && exit $$status
 
 clean:
 	rm -rf build

@@ -25,6 +25,9 @@ namespace testing {
 inline const char* scalarName(Q16_16) { return "Q16.16"; }
 inline const char* scalarName(Q24_8) { return "Q24.8"; }
 inline const char* scalarName(Float) { return "Float"; }
+// For a check that involves no scalar (the real-time loop's clock).
+struct NoScalar {};
+inline const char* scalarName(NoScalar) { return "-"; }
 
 // The step of the scalar around `magnitude`: one unit of the last place for
 // fixed point, float's spacing there for Float.
