@@ -19,7 +19,6 @@ test(Wall_Float) { assertTrue(Cases::checkWall(200)); }
 test(BallHit_Float) { assertTrue(Cases::checkBallHit()); }
 test(MassRatioCollision_Float) { assertTrue(Cases::checkMassRatioCollision()); }
 test(Stack_Float) {
-  TestRunner::setTimeout(0);
   assertTrue(Cases::checkStack());
 }
 test(Coincident_Float) { assertTrue(Cases::checkCoincident()); }
@@ -67,6 +66,7 @@ void setup() {
 #endif
   Serial.begin(115200);
   while (!Serial);
+  TestRunner::setTimeout(0);  // long cases: the whole run is timed by run-tests
 }
 
 void loop() { TestRunner::run(); }

@@ -62,6 +62,7 @@ void setup() {
 #endif
   Serial.begin(115200);
   while (!Serial);
+  TestRunner::setTimeout(0);  // long cases: the whole run is timed by run-tests
 }
 
 void loop() { TestRunner::run(); }

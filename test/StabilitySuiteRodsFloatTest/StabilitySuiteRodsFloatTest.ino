@@ -13,7 +13,6 @@ typedef StabilityCases<Float> Cases;
 
 // 10^5 steps: 390 s of swing.
 test(Pendulum_Float) {
-  TestRunner::setTimeout(0);
   assertTrue(Cases::checkPendulum(100000UL));
 }
 test(Chain_Float) { assertTrue(Cases::checkChain()); }
@@ -26,6 +25,7 @@ void setup() {
 #endif
   Serial.begin(115200);
   while (!Serial);
+  TestRunner::setTimeout(0);  // long cases: the whole run is timed by run-tests
 }
 
 void loop() { TestRunner::run(); }

@@ -21,7 +21,6 @@ test(Wall_Q16_16) { assertTrue(Cases::checkWall(200)); }
 test(BallHit_Q16_16) { assertTrue(Cases::checkBallHit()); }
 test(MassRatioCollision_Q16_16) { assertTrue(Cases::checkMassRatioCollision()); }
 test(Stack_Q16_16) {
-  TestRunner::setTimeout(0);
   assertTrue(Cases::checkStack());
 }
 test(Coincident_Q16_16) { assertTrue(Cases::checkCoincident()); }
@@ -44,6 +43,7 @@ void setup() {
 #endif
   Serial.begin(115200);
   while (!Serial);
+  TestRunner::setTimeout(0);  // long cases: the whole run is timed by run-tests
 }
 
 void loop() { TestRunner::run(); }

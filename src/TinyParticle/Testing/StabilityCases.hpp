@@ -57,6 +57,33 @@ inline Fixed<I, F> tinyUnit(Fixed<I, F>) {
 }
 inline Float tinyUnit(Float) { return Float(8.6736174e-19); }  // 2^-60
 
+// x as d.dddddde[-]N (7 significant digits: a float's), so that tiny
+// bounds and values keep their digits ("0" for zero).
+inline void printScientific(float x) {
+  if (x == 0) {
+    Serial.print('0');
+    return;
+  }
+  if (x < 0) {
+    Serial.print('-');
+    x = -x;
+  }
+  // By tens, not log10f() and powf(): a sketch of rod cases has no flash
+  // for them. (Each step may round the last digit: these are for reading.)
+  int exponent = 0;
+  while (x >= 9.9999995f) {  // (what would print as 10.000000)
+    x /= 10;
+    ++exponent;
+  }
+  while (x < 0.99999995f) {
+    x *= 10;
+    --exponent;
+  }
+  Serial.print(x, 6);
+  Serial.print('e');
+  Serial.print(exponent);
+}
+
 // Prints the line and returns whether measured <= bound (NaN fails).
 template <typename S>
 bool stabilityLine(const __FlashStringHelper* name, float bound,
@@ -71,9 +98,10 @@ bool stabilityLine(const __FlashStringHelper* name, float bound,
   Serial.print(' ');
   Serial.print(scalarName(S()));
   Serial.print(' ');
-  Serial.print(bound, 7);
+  printScientific(bound);
   Serial.print(' ');
-  Serial.println(measured, 7);
+  printScientific(measured);
+  Serial.println();
   return measured <= bound;
 }
 
