@@ -11,9 +11,15 @@ using tinyparticle::testing::StabilityCases;
 
 typedef StabilityCases<Float> Cases;
 
-// 10^5 steps: 390 s of swing.
+// 10^5 steps (390 s of swing) on the host; on the Nano 2 x 10^4 (78 s,
+// over 12 periods: the bound is the same, as the error does not drift),
+// which take float arithmetic about 30 s of simulated time instead of 150.
 test(Pendulum_Float) {
+#if defined(EPOXY_DUINO)
   assertTrue(Cases::checkPendulum(100000UL));
+#else
+  assertTrue(Cases::checkPendulum(20000UL));
+#endif
 }
 test(Chain_Float) { assertTrue(Cases::checkChain()); }
 test(MassRatioRod_Float) { assertTrue(Cases::checkMassRatioRod()); }
