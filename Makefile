@@ -14,7 +14,7 @@ JOBS ?= 2
 # The demo example (DEMO=examples/Name runs another one).
 DEMO ?= examples/BouncingBalls
 
-.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil verify-asm clean
+.PHONY: help setup demo test test-host test-target checks sizes bench bench-quick hil verify-asm fuzz stability clean
 
 help:
 	@sed -n '3,4p' Makefile | sed 's/^# *//'
@@ -83,6 +83,20 @@ hil:
 verify-asm:
 	@$(SCRIPTS)/setup-packages test
 	@$(SCRIPTS)/verify-asm --jobs $(JOBS) $(VERIFY_ASM_FLAGS)
+
+# The world fuzzer (extras/fuzz) for FUZZ_SECONDS (default 300) seconds;
+# its corpus stays in build/fuzz/corpus, findings in build/fuzz/crash-*.
+fuzz:
+	@$(SCRIPTS)/setup-packages fuzz
+	@$(MAKE) --no-print-directory -C extras/fuzz run
+
+# The stability suite (test/StabilitySuite*Test) on the host and the
+# simulated Nano, then its table: extras/stability/results.csv and
+# extras/stability/README.md.
+stability:
+	@$(SCRIPTS)/setup-packages test
+	@$(SCRIPTS)/run-tests --jobs $(JOBS) --only host,target --filter StabilitySuite; \
+	status=$$?; extras/stability/collect && exit $$status
 
 clean:
 	rm -rf build

@@ -48,6 +48,33 @@ test(StableWorldIsNotFlagged_Float) {
   assertLess(fabs(w.particle(p)->position.x.toFloat()), 0.2f);
 }
 
+// Found by extras/fuzz: between a floor and a ceiling of restitution 85
+// the speed grows 85 times at each bounce, and 85^20 > FLT_MAX: the
+// contacts (after the integrator's check) take the velocity past float's
+// range within about 20 bounces. After every step the particle is finite
+// or the world is flagged, and it ends flagged, stopped, at a finite
+// position.
+test(ContactsThatDivergeAreFlagged_Float) {
+  World<Float, 2, 1, 0, 2, 2> w;
+  ParticleId p = w.addParticle(V(0.5, 0.5), Float(1));
+  w.particle(p)->velocity = V(0.0, -1.0);
+  w.addPlane(V(0.0, 1.0), Float(0), Float(85));
+  w.addPlane(V(0.0, -1.0), Float(-1), Float(85));
+  bool silent = false;
+  for (uint16_t n = 0; n < 2000 && w.error() == 0; ++n) {
+    w.step(Float(1.0 / 256));
+    const W::ParticleType& q = *w.particle(p);
+    const bool isFinite = finite(q.position.x) && finite(q.position.y) &&
+                          finite(q.velocity.x) && finite(q.velocity.y);
+    if (!isFinite && w.error() == 0) silent = true;
+  }
+  const W::ParticleType& q = *w.particle(p);
+  assertFalse(silent);
+  assertEqual((int) w.error(), (int) WorldError::kNonFinite);
+  assertTrue(finite(q.position.x) && finite(q.position.y));
+  assertTrue(q.velocity == V());
+}
+
 // step(dt <= 0) does nothing and raises kBadArgument (-0 and NaN too).
 test(NonPositiveDtIsRefused_Float) {
   W w;

@@ -81,7 +81,10 @@ struct RodSolver {
     if (!(link.length > S())) return false;
     link.inverseLength = S(1) / link.length;
     V d = span(world, s);
-    d.normalize();  // stays zero if the ends coincide
+    // Ends that coincide have no direction: any will do (as for colliding
+    // balls), and the rod pushes them apart along it. (With none, they
+    // stayed together, unflagged: extras/stability.)
+    if (!d.normalize()) d.y = S(1);
     link.direction = d;
     link.next = link.prev = kNoIndex;
     return true;

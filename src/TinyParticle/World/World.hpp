@@ -20,7 +20,9 @@
 //     particle and raises WorldError::kNonFinite (see nonFinite());
 //  3. contact generators (rods, cables, planes, collisions) fill the contact
 //     pool;
-//  4. the resolver (Contacts/Resolver.hpp) resolves them;
+//  4. the resolver (Contacts/Resolver.hpp) resolves them; for a float
+//     scalar what the rods and contacts leave is checked as in 2, so that
+//     after a step every particle is finite or kNonFinite is set;
 //  5. the accumulators are cleared, so forces applied between steps act in
 //     the next step.
 //
@@ -507,6 +509,7 @@ class World
       mStats.iterations =
           Resolver<World>::resolve(*this, byDt, uint8_t(cap));
       TINYPARTICLE_PROFILE_END(kProfileResolve);
+      checkFiniteAfterContacts();
     }
     for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
     StepScalerStore::setStepScaler(nullptr);  // byDt ends with the step
@@ -855,6 +858,24 @@ class World
       x = x > S() ? S::largest() : (x < S() ? S::lowest() : S());
     }
     nonFinite(p);
+  }
+
+  // What the rods and contacts leave is checked too, so that the state a
+  // step leaves is finite or flagged: contacts fed extreme input (a
+  // restitution far above 1, found by extras/fuzz) can take a float
+  // velocity or position beyond range after integrate() checked it. The
+  // particle is treated as there (nonFinitePosition(), nonFinite()). For
+  // fixed point the test is a constant false and the loop disappears.
+  void checkFiniteAfterContacts() {
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      ParticleType& p = particleAt(i);
+      if (!isMoving(p)) continue;
+      if (detail::isNonFinite(p.position)) {
+        nonFinitePosition(p);
+      } else if (detail::isNonFinite(p.velocity)) {
+        nonFinite(p);
+      }
+    }
   }
 
   // One axis of a step: v += a dt + (uniform a) dt, then x += v dt. Zeros
