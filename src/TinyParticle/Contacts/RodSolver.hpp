@@ -56,8 +56,9 @@
 // turns slowly.
 //
 // Cost per rod of a chain and step, Q16.16 on AVR: about 30 multiplies and
-// two divisions (one per solve), no square root while the rod turns slowly
-// (the new direction is normalised by one Newton step from 1 / L).
+// two divisions (one per solve: the further passes of a solve reuse its
+// factors), no square root while the rod turns slowly (the new direction
+// is normalised by one Newton step from 1 / L).
 #pragma once
 
 #include <stdint.h>
@@ -138,6 +139,7 @@ struct RodSolver {
     world.movePositions(pass.byDt);
     newDirections(world);
     pass.positions = false;
+    pass.factored = false;
     for (n = 0; n < kMaxPasses; ++n) {
       sweep(world, rows, pass);
       if (!coupled) break;
@@ -152,15 +154,17 @@ struct RodSolver {
 
  private:
   struct Row {
-    S multiplier;  // the elimination's factor for this row
-    S y;           // the row's right side, eliminated and divided
-    S yMove;       // the same for the length errors (position solve)
-    S moved;       // the first pass's position impulse, applied after all
+    S multiplier;    // the elimination's factor for this row
+    S inversePivot;  // 1 / the row's pivot, after the elimination
+    S y;             // the row's right side, eliminated and divided
+    S yMove;         // the same for the length errors (position solve)
+    S moved;         // the first pass's position impulse, applied after all
   };
 
   struct Pass {
     Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
-        turned(false), first(true), coupled(false), unit(true), worst() {}
+        turned(false), first(true), coupled(false), unit(true),
+        factored(false), worst() {}
     const Scaler<S>& byDt;
     S invDt;
     bool positions;  // the position solve (SHAKE), or the velocities
@@ -168,6 +172,7 @@ struct RodSolver {
     bool first;      // the first pass of the position solve
     bool coupled;    // chains meet: passes repeat (Gauss-Seidel)
     bool unit;       // directions are unit vectors (else d / L: Lone rods)
+    bool factored;   // the rows' factors are set for these directions
     S worst;         // the largest correction of a length, m
   };
 
@@ -603,6 +608,24 @@ struct RodSolver {
     return detail::isZero(c) ? c : c * cosine;
   }
 
+  // The elimination's factor and inverse pivot of row i (rod s), the row
+  // before it factored already.
+  static void factor(W& world, const Slot& s, uint8_t i, Row* rows) {
+    S pivot = inverseMassOf(world, s.a) + inverseMassOf(world, s.b);
+    S multiplier = S();
+    const uint8_t prev = s.params.link.prev;
+    if (prev != kNoIndex) {
+      const S c = coupling(world, s, world.constraintAt(prev));
+      if (!detail::isZero(c)) {
+        multiplier = c * rows[prev].inversePivot;
+        pivot -= multiplier * c;
+      }
+    }
+    rows[i].multiplier = multiplier;
+    // Both ends immovable: no impulse.
+    rows[i].inversePivot = detail::isPositive(pivot) ? S(1) / pivot : S();
+  }
+
   // One pass over all chains.
   static void sweep(W& world, Row* rows, Pass& pass) {
     for (uint8_t head = 0; head < W::kConstraintCapacity; ++head) {
@@ -612,31 +635,24 @@ struct RodSolver {
       }
       // Down the chain: eliminate the coupling with the rod before.
       uint8_t last = head;
-      S previousInversePivot = S(), previousRight = S(), previousMove = S();
+      S previousRight = S(), previousMove = S();
       for (uint8_t i = head; i != kNoIndex;
            i = world.constraintAt(i).params.link.next) {
         const Slot& s = world.constraintAt(i);
         S move = S();
         S right = rightSide(world, s, pass, move);
         if (!detail::isZero(move)) move *= pass.invDt;  // a speed
-        S pivot = inverseMassOf(world, s.a) + inverseMassOf(world, s.b);
-        S multiplier = S();
-        if (i != head) {
-          const S c = coupling(world, s, world.constraintAt(s.params.link.prev));
-          if (!detail::isZero(c)) {
-            multiplier = c * previousInversePivot;
-            pivot -= multiplier * c;
-            right -= multiplier * previousRight;
-            move -= multiplier * previousMove;
-          }
+        // The matrix depends on the directions and masses only: factored
+        // in the first pass of each solve, reused by the further passes.
+        if (!pass.factored) factor(world, s, i, rows);
+        const S multiplier = rows[i].multiplier;
+        if (!detail::isZero(multiplier)) {
+          right -= multiplier * previousRight;
+          move -= multiplier * previousMove;
         }
-        // Both ends immovable: no impulse.
-        const S inversePivot =
-            detail::isPositive(pivot) ? S(1) / pivot : S();
-        rows[i].multiplier = multiplier;
+        const S inversePivot = rows[i].inversePivot;
         rows[i].y = right * inversePivot;
         rows[i].yMove = move * inversePivot;
-        previousInversePivot = inversePivot;
         previousRight = right;
         previousMove = move;
         last = i;
@@ -653,6 +669,7 @@ struct RodSolver {
         apply(world, world.constraintAt(i), mu, pass);
       }
     }
+    pass.factored = true;
   }
 };
 
