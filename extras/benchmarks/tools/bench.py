@@ -8,6 +8,11 @@
                              the committed outputs are left alone
     bench.py --only ops,scenes,memory,report
                              some stages (report = tables, plots, README)
+    bench.py --scenes lever,chain [--out DIR]
+                             only these scenes (every scalar, dimension and
+                             step of theirs), printed as a table and written
+                             to DIR/scenes.csv (a fresh temporary folder by
+                             default); the committed outputs are left alone
 
 Runs on the simulated Nano (simavr) through extras/scripts/nano-build and
 extras/scripts/simavr-run, two at a time by default (--jobs). Raw UART logs
@@ -85,8 +90,8 @@ def run_memory(out_dir, build_root, jobs, quick):
     return rows
 
 
-def run_scenes(out_dir, build_root, jobs, quick):
-    rows = scenes.run(build_root, jobs, quick)
+def run_scenes(out_dir, build_root, jobs, quick, names=None):
+    rows = scenes.run(build_root, jobs, quick, names)
     path = os.path.join(out_dir, "scenes.csv")
     write_csv(path, scenes.COLUMNS, rows)
     log("measured %s (%d rows)" % (name_of(path), len(rows)))
@@ -152,6 +157,31 @@ def check_outputs(out_dir, stages):
 STAGES = ["ops", "scenes", "memory", "report"]
 
 
+def measure_scenes(names, out, jobs):
+    """Some scenes alone: a table on stdout and scenes.csv in `out` (never
+    the committed folder: a partial CSV there would disagree with the
+    tables made from it)."""
+    out_dir = out or tempfile.mkdtemp(prefix="tinyparticle-scenes-")
+    if os.path.realpath(out_dir) == os.path.realpath(BENCH):
+        log("--scenes writes a partial scenes.csv: give another --out")
+        return 2
+    build_root = os.path.join(REPO, "build", "bench")
+    os.makedirs(out_dir, exist_ok=True)
+    os.makedirs(build_root, exist_ok=True)
+    try:
+        rows = run_scenes(out_dir, build_root, jobs, False, names)
+    except runner.BenchError as e:
+        log("FAILED: %s" % e)
+        return 1
+    shown = ["scene", "scalar", "dim", "n", "dt_ms", "cycles_per_step",
+             "max_link_err", "max_energy_err", "ref_max_energy_err"]
+    print(" ".join("%-9s" % c[:9] for c in shown))
+    for r in rows:
+        print(" ".join("%-9s" % r[c] for c in shown))
+    log("scenes.csv in %s" % out_dir)
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -159,8 +189,13 @@ def main():
     ap.add_argument("--out", help="output folder (default: extras/benchmarks, "
                     "or a new temporary folder with --quick)")
     ap.add_argument("--only", help="comma-separated stages: " + ",".join(STAGES))
+    ap.add_argument("--scenes", help="comma-separated scene names (lever, "
+                    "chain, ...): measure only these, outside the committed "
+                    "outputs")
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
+    if args.scenes:
+        return measure_scenes(args.scenes.split(","), args.out, args.jobs)
 
     stages = args.only.split(",") if args.only else STAGES
     for s in stages:

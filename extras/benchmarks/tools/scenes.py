@@ -238,10 +238,15 @@ def host_run(exe, sc, rate):
     return proc.stdout.splitlines()
 
 
-def run(build_root, jobs, quick=False):
+def run(build_root, jobs, quick=False, names=None):
     # quick: 2 balls and a chain of 2, Q16.16, dt = 1/256 (a point of the
-    # cycles-against-N plots, and every column)
+    # cycles-against-N plots, and every column); names: only these scenes
     scenes = [s for s in SCENES if s.quick] if quick else SCENES
+    if names:
+        unknown = set(names) - set(s.name for s in SCENES)
+        if unknown:
+            raise BenchError("no such scene: %s" % ", ".join(sorted(unknown)))
+        scenes = [s for s in scenes if s.name in names]
     logs = os.path.join(build_root, "logs")
     os.makedirs(logs, exist_ok=True)
     exe = build_host(build_root)

@@ -639,9 +639,11 @@ class World
 
   // For the rod solver: whether a constraint slot holds a rod, and the
   // solver's state (kRodsChanged: rods were added or removed since the
-  // chains were found; kRodsCoupled: chains meet, so passes repeat).
+  // chains were found; kRodsCoupled: chains meet, so passes repeat;
+  // kRodsLone: every rod is alone).
   static const uint8_t kRodsChanged = 1;
   static const uint8_t kRodsCoupled = 2;
+  static const uint8_t kRodsLone = 4;
   bool isRod(const ConstraintSlot& c) const {
     return c.generate == &RodSolver<World>::generate;
   }
