@@ -90,7 +90,7 @@ fuzz:
 	@$(SCRIPTS)/setup-packages fuzz
 	@$(MAKE) --no-print-directory -C extras/fuzz run
 
-# The stability suite (test/StabilitySuite*Test) on the host and the
+# The stability suite (extras/test/StabilitySuite*Test) on the host and the
 # simulated Nano, then its table: extras/stability/results.csv and
 # extras/stability/README.md.
 stability:
@@ -100,4 +100,4 @@ stability:
 
 clean:
 	rm -rf build
-	@$(MAKE) --no-print-directory -C test clean
+	@$(MAKE) --no-print-directory -C extras/test clean

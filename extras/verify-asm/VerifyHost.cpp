@@ -36,7 +36,7 @@ struct HostVisit {
   }
 };
 
-// Coverage of the subset (test/AsmClassesTest) only.
+// Coverage of the subset (extras/test/AsmClassesTest) only.
 struct CountOnly {
   uint8_t routine;
   void operator()(int32_t a, int32_t b) { classify(routine, a, b, *gCounts); }

@@ -13,7 +13,7 @@ Only w / H is unknown: it is found by bisection so that the links span the
 posts, sum(length * cos(phi_j)) = span; the beads follow link by link.
 The masses drop out: any equal masses hang the same way.
 
-Prints the beads' coordinates, or with --cpp the constants test/RopeTest
+Prints the beads' coordinates, or with --cpp the constants extras/test/RopeTest
 uses (that test's numbers were made by `catenary.py --cpp`).
 """
 import argparse

@@ -13,7 +13,7 @@
 // input that each routine's code tells apart (table entries, shifts,
 // corrections, saturation edges, with +-3 neighbours) and 10^6 to 10^7
 // random inputs per routine: see extras/verify-asm/README.md and
-// results.csv. test/AsmClassesTest runs a subset of it in `make test`.
+// results.csv. extras/test/AsmClassesTest runs a subset of it in `make test`.
 //
 // The routines are out-of-line naked functions, so that the engine's many
 // multiplies share one copy of the code (a call costs a few cycles,

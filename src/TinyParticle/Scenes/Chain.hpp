@@ -14,7 +14,7 @@
 // between them on eight rods of 0.1 m, started on a "V" close to the
 // hanging shape (bead k at x = 0.075 k, y = -0.066144 min(k, 8 - k), which
 // keeps every link at 0.1 m), gravity on all and a damping rate of 1/s on
-// each bead, so it settles into the discrete catenary (test/RopeTest).
+// each bead, so it settles into the discrete catenary (extras/test/RopeTest).
 //
 //   RopeWorld<Q16_16, 2> world;       // 9 particles, 1 force, 8 rods
 //   RopeScene rope = buildRope(world);

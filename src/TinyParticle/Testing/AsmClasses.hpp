@@ -4,7 +4,7 @@
 // - `make verify-asm` (extras/scripts/verify-asm) runs every structured
 //   input below plus at least 10^7 random ones per routine on the simulated
 //   Nano, and counts the classes on the host over the same inputs;
-// - test/AsmClassesTest runs a subset that still hits every class, in
+// - extras/test/AsmClassesTest runs a subset that still hits every class, in
 //   `make test`.
 //
 // For each routine:

@@ -2,8 +2,8 @@
 // examples and the benchmarks build it, for any scalar, in 2D or 3D: how far
 // the balls get beyond the walls, and how the energy changes.
 //
-// Used by test/BallsTest (2D, both scalars), test/Balls3DTest (3D, Q16.16)
-// and test/Balls3DFloatTest (3D, Float), which assert on what it measures.
+// Used by extras/test/BallsTest (2D, both scalars), extras/test/Balls3DTest (3D, Q16.16)
+// and extras/test/Balls3DFloatTest (3D, Float), which assert on what it measures.
 // Not included by TinyParticle.h: include
 // <TinyParticle/Testing/BallChecks.hpp> after it.
 #pragma once

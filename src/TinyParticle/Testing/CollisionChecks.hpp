@@ -2,7 +2,7 @@
 // elastic head-on collision, and a ball dropped on the floor (its rebound,
 // then whether it rests).
 //
-// Used by test/CollisionTest (Q16.16) and test/CollisionFloatTest (Float):
+// Used by extras/test/CollisionTest (Q16.16) and extras/test/CollisionFloatTest (Float):
 // the two scalars together no longer fit in the Nano's 30 KB of flash, so one
 // sketch per scalar runs the same scenes from here and asserts on what they
 // measure. Not included by TinyParticle.h: include

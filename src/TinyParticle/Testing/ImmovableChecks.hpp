@@ -1,7 +1,7 @@
 // Test support: particles with inverse mass 0 under gravity, collisions, a
 // rod and applied forces, for any scalar.
 //
-// Used by test/ImmovableTest (Q16.16) and test/ImmovableFloatTest (Float):
+// Used by extras/test/ImmovableTest (Q16.16) and extras/test/ImmovableFloatTest (Float):
 // one sketch per scalar leaves the Nano flash to spare with the real AUnit.
 // Not included by TinyParticle.h: include
 // <TinyParticle/Testing/ImmovableChecks.hpp> after it.

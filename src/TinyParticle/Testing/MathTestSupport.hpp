@@ -1,4 +1,4 @@
-// Test support for the math sketches (test/Fixed*Test, test/Vec*Test): a
+// Test support for the math sketches (extras/test/Fixed*Test, extras/test/Vec*Test): a
 // fixed-sequence random generator, random raw values of every bit length,
 // exact values of fixed-point numbers, and a line that describes a failed
 // operation.

@@ -1,6 +1,6 @@
 // Test support: the pendulum scene's period and rod length, for any scalar.
 //
-// Used by test/PendulumTest (Q16.16) and test/PendulumFloatTest (Float):
+// Used by extras/test/PendulumTest (Q16.16) and extras/test/PendulumFloatTest (Float):
 // the two scalars together come within a few bytes of the Nano's 30 KB of
 // flash with the real AUnit, so one sketch per scalar runs the same scene
 // from here and asserts on what it measures.

@@ -1,7 +1,7 @@
 // Test support: a pendulum's energy through a long swing, and a push along
 // its rod, for any scalar.
 //
-// Used by test/RodEnergyTest (Q16.16) and test/RodEnergyFloatTest (Float):
+// Used by extras/test/RodEnergyTest (Q16.16) and extras/test/RodEnergyFloatTest (Float):
 // one sketch per scalar leaves the Nano flash to spare with the real AUnit.
 // Not included by TinyParticle.h: include
 // <TinyParticle/Testing/RodEnergyChecks.hpp> after it.

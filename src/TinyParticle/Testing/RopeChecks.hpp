@@ -1,6 +1,6 @@
 // Test support: the rope of Scenes/Chain.hpp (buildRope) against the
-// discrete catenary of the same links, for any scalar (test/RopeTest,
-// test/RopeFloatTest).
+// discrete catenary of the same links, for any scalar (extras/test/RopeTest,
+// extras/test/RopeFloatTest).
 //
 // The catenary: seven equal point masses on eight rigid links of 0.1 m
 // between posts 0.6 m apart at the same height, at rest; computed in double

@@ -1,7 +1,7 @@
 // Test support: the stability suite of issue 13, for any scalar.
 //
 // Each case runs a hard scene for a long time and returns the worst value of
-// what it measures; the test sketches (test/Stability*SuiteTest) assert it
+// what it measures; the test sketches (extras/test/Stability*SuiteTest) assert it
 // against a bound derived from physics or from the integrator's known error,
 // stated with the case, and print one machine-readable line per check:
 //
@@ -608,7 +608,7 @@ struct StabilityCases {
     return e;
   }
 
-  // Bounds of issue 9 (test/RodChainTest): links within 0.5 %, energy
+  // Bounds of issue 9 (extras/test/RodChainTest): links within 0.5 %, energy
   // within 0.05 E_fall over 10 s at 256 Hz, no error bits.
   static bool checkChain() {
     float energy;

@@ -1,6 +1,6 @@
 // Test support: a resting stack of balls on the floor, for any scalar.
 //
-// Used by test/StackTest (Q16.16) and test/StackFloatTest (Float): the two
+// Used by extras/test/StackTest (Q16.16) and extras/test/StackFloatTest (Float): the two
 // scalars together no longer fit in the Nano's 30 KB of flash, so one sketch
 // per scalar runs the same scene from here and asserts on what it measures.
 // Not included by TinyParticle.h: include

@@ -1,7 +1,7 @@
 // Test support: the world's pools and handles (exhaustion, stale handles,
 // removal cascades, bad arguments), for any scalar.
 //
-// Used by test/WorldTest (Q16.16) and test/WorldFloatTest (Float): the two
+// Used by extras/test/WorldTest (Q16.16) and extras/test/WorldFloatTest (Float): the two
 // scalars together no longer fit in the Nano's 30 KB of flash, so one sketch
 // per scalar runs the same checks from here. Not included by TinyParticle.h:
 // include <TinyParticle/Testing/WorldChecks.hpp> after it. Nothing here steps
