@@ -138,14 +138,18 @@ struct CollisionConstraint {
     const V delta = a.position - b.position;
     const S distanceSquared = delta.magnitudeSquared();
     if (distanceSquared > outer * outer) return;
-    V normal;
-    S penetration = reach;
-    if (distanceSquared == S()) {
+    // The normal from the difference itself, not from distanceSquared: for
+    // small balls in fixed point that square is a few units of the scalar
+    // (r = 1 cm in Q16.16: 26 units at contact), and a normal from it would
+    // be off by a few percent, a bounce gaining or losing as much energy.
+    // Vec's normalisation scales the difference up first (Math/Vec.hpp), so
+    // the normal is unit length to a few units of the scalar.
+    V normal = delta;
+    const S distance = normal.magnitudeAndNormalize();
+    S penetration = reach - distance;
+    if (distance == S()) {
+      normal = V();
       normal.y = S(1);  // centres coincide: any direction will do
-    } else {
-      S distance = sqrt(distanceSquared);
-      normal = delta * (S(1) / distance);
-      penetration = reach - distance;
     }
     world.addContact(i, j, normal, penetration, source);
   }
