@@ -133,7 +133,7 @@ struct CollisionConstraint {
   static void pair(W& world, uint8_t i, uint8_t j, S outer, uint8_t source) {
     const P& a = world.particleAt(i);
     const P& b = world.particleAt(j);
-    if (a.isStatic() && b.isStatic()) return;
+    if (a.isResting() && b.isResting()) return;  // immovable or asleep
     const S reach = a.radius + b.radius;
     const V delta = a.position - b.position;
     const S distanceSquared = delta.magnitudeSquared();

@@ -23,6 +23,12 @@ struct Particle {
     // that the step's many immovability tests are a bit test, not a scalar
     // compare (a float compare costs about 45 cycles on AVR).
     kStatic = 4,
+    // Asleep (World::enableSleeping()): not stepped, not tested against
+    // planes or other sleepers, until something wakes it. Bits 4 to 7 count
+    // the steps it has been at rest (kRestStep each, up to kRestCount).
+    kAsleep = 8,
+    kRestStep = 16,
+    kRestCount = 0xF0,
   };
 
   VecType position;
@@ -52,6 +58,9 @@ struct Particle {
   bool isImmovable() const { return inverseMass == S(); }
   // isImmovable() as of the start of the current step (see kStatic).
   bool isStatic() const { return (flags & kStatic) != 0; }
+  bool isAsleep() const { return (flags & kAsleep) != 0; }
+  // Immovable or asleep: two such particles need no contact.
+  bool isResting() const { return (flags & (kStatic | kAsleep)) != 0; }
 
   // Mass in kg; an immovable particle reports S::largest().
   S mass() const { return isImmovable() ? S::largest() : S(1) / inverseMass; }

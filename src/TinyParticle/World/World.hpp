@@ -48,6 +48,7 @@
 #include "Margins.hpp"
 #include "Particle.hpp"
 #include "RodState.hpp"
+#include "Sleep.hpp"
 #include "Slots.hpp"
 #include "UniformAcceleration.hpp"
 
@@ -108,7 +109,9 @@ class World
       : mContactCount(0),
         mError(0),
         mIterationCap(0),
-        mStats() {}
+        mStats(),
+        mSettle(nullptr),
+        mWoke(false) {}
 
   // The standard gravity of every scene: 9.81 m/s^2 along -y.
   static Vec standardGravity() {
@@ -470,6 +473,7 @@ class World
     // With rods, the positions move after the rods' velocity solve, so that
     // each moves once, rounded once (the solver calls movePositions()).
     const RodSolve solveRods = RodStore::rodSolver();
+    if (mSettle != nullptr) mSettle(*this);  // sleeping (World/Sleep.hpp)
     integrate(byDt, solveRods == nullptr);
     if (kConstraints != 0) {
       if (solveRods != nullptr) {
@@ -478,12 +482,9 @@ class World
         TINYPARTICLE_PROFILE_END(kProfileRods);
       }
       TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
-      mContactCount = 0;
-      mStats.dropped = 0;
-      for (uint8_t i = 0; i < kConstraints; ++i) {
-        ConstraintSlot& c = constraintAt(i);
-        if (c.generate != nullptr) c.generate(*this, c, i);
-      }
+      generateContacts();
+      // A contact woke the sleepers: their contacts again, all awake.
+      if (mWoke) generateContacts();
       mStats.contacts = mContactCount;
       TINYPARTICLE_PROFILE_END(kProfileContacts);
       TINYPARTICLE_PROFILE_BEGIN(kProfileResolve);
@@ -527,7 +528,30 @@ class World
     mError = 0;
     mIterationCap = 0;
     mStats = StepStats();
+    mSettle = nullptr;
+    mWoke = false;
   }
+
+  // Sleeping (World/Sleep.hpp), off by default: particles that have moved
+  // slower than sleepSpeed() along every axis for 15 steps stop, and cost
+  // almost nothing until something touches them; then all wake. A sketch
+  // that moves a sleeping particle by hand (its position) calls wakeAll().
+  // Its code is linked only into sketches that call this.
+  void enableSleeping(bool on = true) {
+    if (!on) wakeAll();
+    mSettle = on ? &Sleeping<World>::settle : nullptr;
+  }
+  bool isSleepingEnabled() const { return mSettle != nullptr; }
+  void wakeAll() {
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      ParticleType& p = particleAt(i);
+      if (p.isAsleep()) mWoke = true;
+      p.flags &= uint8_t(~(ParticleType::kAsleep | ParticleType::kRestCount));
+    }
+  }
+  // The speed (1/128 m/s, along each axis) below which a particle counts as
+  // at rest for sleeping.
+  static S sleepSpeed() { return detail::Margins<S>::speed() * S(64); }
 
   // The resolver's iteration cap per step; 0 (the default) means twice the
   // number of contacts of that step.
@@ -678,6 +702,7 @@ class World
   TINYPARTICLE_NOINLINE void recordContact(uint8_t a, uint8_t b,
                                            const Vec& normal, S penetration,
                                            S separating, uint8_t source) {
+    if (mSettle != nullptr) wakeFor(a, b, penetration, separating);
     uint8_t slot = mContactCount;
     if (slot >= kContacts) {
       mError |= WorldError::kContactsDropped;
@@ -794,8 +819,8 @@ class World
 
   // In use and movable: what the integrator steps.
   static bool isMoving(const ParticleType& p) {
-    return (p.flags & (ParticleType::kInUse | ParticleType::kStatic)) ==
-           ParticleType::kInUse;
+    return (p.flags & (ParticleType::kInUse | ParticleType::kStatic |
+                       ParticleType::kAsleep)) == ParticleType::kInUse;
   }
 
   // x += v dt; false (and the particle stopped, see nonFinitePosition())
@@ -1016,10 +1041,32 @@ class World
     return id;
   }
 
+  // The step's contacts: every generator once, from an empty pool.
+  void generateContacts() {
+    mWoke = false;
+    mContactCount = 0;
+    mStats.dropped = 0;
+    for (uint8_t i = 0; i < kConstraints; ++i) {
+      ConstraintSlot& c = constraintAt(i);
+      if (c.generate != nullptr) c.generate(*this, c, i);
+    }
+  }
+
+  // A contact of a sleeper that is closing or penetrating wakes everyone.
+  void wakeFor(uint8_t a, uint8_t b, S penetration, S separating) {
+    const bool asleep = particleAt(a).isAsleep() ||
+                        (b < kParticles && particleAt(b).isAsleep());
+    if (asleep && (penetration > contactMargin() || separating < -speedMargin())) {
+      wakeAll();
+    }
+  }
+
   uint8_t mContactCount;
   uint8_t mError;
   uint8_t mIterationCap;
   StepStats mStats;
+  void (*mSettle)(World&);  // Sleeping<World>::settle when sleeping is on
+  bool mWoke;               // a sleeper woke during this step's contacts
 };
 
 }  // namespace tinyparticle
