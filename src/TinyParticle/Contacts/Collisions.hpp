@@ -26,6 +26,7 @@
 #include <stdint.h>
 
 #include "../Configuration.hpp"
+#include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../World/Handle.hpp"
 
@@ -64,6 +65,9 @@ struct CollisionConstraint {
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
+    if (isTooFast(world, entries, count)) {
+      world.raiseError(WorldError::kTunnelling);
+    }
     // Keep the new order for the next step: the colliding particles
     // sorted, then the others (any order will do for them).
     if (count > 0) {
@@ -81,6 +85,26 @@ struct CollisionConstraint {
     S low;
     uint8_t index;
   };
+
+  // Whether a moving particle of the list has gone farther than its radius
+  // in this step, along the axes together: |vx| + |vy| (+ |vz|) times dt >
+  // r, a bound on the length of its move. Below it, two particles close by
+  // less than the sum of their radii in a step, so their centres cannot
+  // pass each other between two looks: a collision is found, on the right
+  // side. Beyond it a pair may pass through each other unseen: the step
+  // raises WorldError::kTunnelling. (Planes are half-spaces: whatever has
+  // crossed one is still behind it, and is pushed back.)
+  static bool isTooFast(W& world, const Entry* entries, uint8_t count) {
+    const Scaler<S>& byDt = world.stepScaler();
+    for (uint8_t m = 0; m < count; ++m) {
+      const P& p = world.particleAt(entries[m].index);
+      if (p.isResting()) continue;
+      S speed = fabs(p.velocity.x) + fabs(p.velocity.y);
+      if (W::kDimensions == 3) speed += fabs(p.velocity[2]);
+      if (byDt(speed) > p.radius) return true;
+    }
+    return false;
+  }
 
   // The pairs of the sorted list. Out of line, so that its frame is small:
   // behind the list's frame, every spilled value would cost more to reach.

@@ -24,11 +24,8 @@ struct Particle {
     // compare (a float compare costs about 45 cycles on AVR).
     kStatic = 4,
     // Asleep (World::enableSleeping()): not stepped, not tested against
-    // planes or other sleepers, until something wakes it. Bits 4 to 7 count
-    // the steps it has been at rest (kRestStep each, up to kRestCount).
+    // planes or other resting particles, until something wakes it.
     kAsleep = 8,
-    kRestStep = 16,
-    kRestCount = 0xF0,
   };
 
   VecType position;

@@ -1,26 +1,27 @@
 // Sleeping (World::enableSleeping()): particles at rest cost (almost)
 // nothing until something touches them.
 //
-// Before each step moves anything, every movable particle is looked at once:
-//  - awake: if its speed along every axis stayed within World::sleepSpeed()
-//    (1/128 m/s) and no force acted on it, its rest count goes up; after
-//    kRestSteps such steps in a row it falls asleep: its velocity becomes
-//    exactly zero. Any faster step starts the count again;
-//  - asleep: a velocity or a force given to it since (by the sketch, or a
-//    force generator) wakes it.
+// The world is one island: it falls asleep as a whole and wakes as a whole.
+// Before each step moves anything, every movable particle is looked at once.
+// When each one's speed along every axis has stayed within
+// World::sleepSpeed() (1/128 m/s), with no force on it, for kRestSteps steps
+// in a row, they all fall asleep: their velocities become exactly zero. A
+// velocity or a force given to a sleeper since (by the sketch, or a force
+// generator) wakes them all.
 // A sleeping particle is not integrated and makes no contact with planes or
 // with other resting particles (asleep or immovable), so a settled pile
 // costs one test per particle in each generator and nothing in the
 // resolver.
 //
 // Waking: a contact between a sleeper and an awake particle that is closing
-// or penetrating beyond the margins (World::recordContact) wakes it, and so
-// does the resolver pushing it. Any wake wakes every sleeper: the world is
-// one island. A pile whose support is knocked away then never hangs in the
-// air, and a disturbed pile reacts as it would have without sleeping (the
-// step that wakes it makes its contacts again, with everyone awake). The
-// price: one disturbance wakes all piles of the scene, which fall asleep
-// again kRestSteps steps after they are still.
+// or penetrating beyond the margins (World::recordContact) wakes them all,
+// and so does the resolver pushing a sleeper. A pile whose support is
+// knocked away then never hangs in the air, and a disturbed pile reacts as
+// it would have without sleeping: the woken particles get the motion of
+// the step they missed, and the step makes its contacts again with
+// everyone awake. A particle added to a sleeping world is awake; the world
+// sleeps again once it too is at rest. The price of one island: a pile
+// sleeps only when everything is still, and wakes whole.
 #pragma once
 
 #include <stdint.h>
@@ -34,27 +35,38 @@ struct Sleeping {
   typedef typename W::Scalar S;
   typedef typename W::ParticleType P;
 
-  // The steps at rest before a particle falls asleep (at most 15: the count
-  // lives in four bits of its flags).
+  // The steps in a row that every particle must be at rest before all fall
+  // asleep.
   static const uint8_t kRestSteps = 15;
 
   static void settle(W& world) {
     const S limit = W::sleepSpeed();
+    bool still = true;
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       P& p = world.particleAt(i);
       if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;
       const bool pushed = !isNull(p.acceleration);
       if (p.isAsleep()) {
-        if (pushed || !isNull(p.velocity)) world.wakeAll();
-        continue;
+        if (pushed || !isNull(p.velocity)) {
+          world.wakeAll();
+          still = false;
+        }
+      } else if (pushed || !isSlow(p.velocity, limit)) {
+        still = false;
       }
-      if (pushed || !isSlow(p.velocity, limit)) {
-        p.flags &= uint8_t(~P::kRestCount);
-      } else if ((p.flags & P::kRestCount) >= kRestSteps * P::kRestStep) {
+    }
+    uint8_t& count = world.restSteps();
+    if (!still) {
+      count = 0;
+    } else if (count < kRestSteps) {
+      ++count;
+    } else {
+      count = 0;  // a particle added later counts from zero
+      for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+        P& p = world.particleAt(i);
+        if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;
         p.flags |= P::kAsleep;
         p.velocity = typename W::Vec();
-      } else {
-        p.flags = uint8_t(p.flags + P::kRestStep);
       }
     }
   }

@@ -111,7 +111,9 @@ class World
         mIterationCap(0),
         mStats(),
         mSettle(nullptr),
-        mWoke(false) {}
+        mWoke(false),
+        mInContacts(false),
+        mRestSteps(0) {}
 
   // The standard gravity of every scene: 9.81 m/s^2 along -y.
   static Vec standardGravity() {
@@ -482,6 +484,7 @@ class World
         TINYPARTICLE_PROFILE_END(kProfileRods);
       }
       TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
+      mInContacts = true;
       generateContacts();
       // A contact woke the sleepers: their contacts again, all awake.
       if (mWoke) generateContacts();
@@ -493,6 +496,7 @@ class World
       if (cap > 255) cap = 255;
       mStats.iterations =
           Resolver<World>::resolve(*this, byDt, uint8_t(cap));
+      mInContacts = false;
       TINYPARTICLE_PROFILE_END(kProfileResolve);
     }
     for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
@@ -530,23 +534,32 @@ class World
     mStats = StepStats();
     mSettle = nullptr;
     mWoke = false;
+    mRestSteps = 0;
   }
 
-  // Sleeping (World/Sleep.hpp), off by default: particles that have moved
-  // slower than sleepSpeed() along every axis for 15 steps stop, and cost
-  // almost nothing until something touches them; then all wake. A sketch
-  // that moves a sleeping particle by hand (its position) calls wakeAll().
-  // Its code is linked only into sketches that call this.
+  // Sleeping (World/Sleep.hpp), off by default: once every particle has
+  // moved slower than sleepSpeed() along every axis for 15 steps, all stop
+  // and cost almost nothing until something touches them; then all wake.
+  // A sketch that moves a sleeping particle by hand (its position) calls
+  // wakeAll(). Its code is linked only into sketches that call this.
   void enableSleeping(bool on = true) {
     if (!on) wakeAll();
     mSettle = on ? &Sleeping<World>::settle : nullptr;
   }
   bool isSleepingEnabled() const { return mSettle != nullptr; }
+  // For Sleeping<World>: the steps in a row that everything was at rest.
+  uint8_t& restSteps() { return mRestSteps; }
   void wakeAll() {
+    mRestSteps = 0;
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
-      if (p.isAsleep()) mWoke = true;
-      p.flags &= uint8_t(~(ParticleType::kAsleep | ParticleType::kRestCount));
+      const bool asleep = p.isAsleep();
+      p.flags &= uint8_t(~ParticleType::kAsleep);
+      if (!asleep) continue;
+      mWoke = true;
+      // Woken by a contact: it gets the motion of this step that it
+      // missed, as if it had been awake.
+      if (mInContacts) catchUp(p);
     }
   }
   // The speed (1/128 m/s, along each axis) below which a particle counts as
@@ -561,9 +574,9 @@ class World
   uint8_t contactCount() const { return mContactCount; }
 
   // WorldError bits, sticky until clearError().
-  uint8_t error() const { return mError; }
+  uint16_t error() const { return mError; }
   void clearError() { mError = 0; }
-  void raiseError(uint8_t bits) { mError |= bits; }
+  void raiseError(uint16_t bits) { mError |= bits; }
 
   // ---- For generators, the renderer and tests ----------------------------
   // Slot access by index, without checks: index < capacity.
@@ -1052,6 +1065,19 @@ class World
     }
   }
 
+  // The integration of this step for a particle woken after it (it was
+  // asleep: no accumulated force, no velocity).
+  void catchUp(ParticleType& p) {
+    const Scaler<S>& byDt = StepScalerStore::stepScaler();
+    if (kForces != 0) {
+      const Vec& uniform = UniformStore::uniform();
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (!detail::isZero(uniform[k])) p.velocity[k] += byDt(uniform[k]);
+      }
+    }
+    moveParticle(p, byDt);
+  }
+
   // A contact of a sleeper that is closing or penetrating wakes everyone.
   void wakeFor(uint8_t a, uint8_t b, S penetration, S separating) {
     const bool asleep = particleAt(a).isAsleep() ||
@@ -1062,11 +1088,13 @@ class World
   }
 
   uint8_t mContactCount;
-  uint8_t mError;
+  uint16_t mError;
   uint8_t mIterationCap;
   StepStats mStats;
   void (*mSettle)(World&);  // Sleeping<World>::settle when sleeping is on
   bool mWoke;               // a sleeper woke during this step's contacts
+  bool mInContacts;         // the step is making or resolving contacts
+  uint8_t mRestSteps;       // steps in a row with everything at rest
 };
 
 }  // namespace tinyparticle
