@@ -9,9 +9,8 @@
 // velocity or a force given to a sleeper since (by the sketch, or a force
 // generator) wakes them all.
 // A sleeping particle is not integrated and makes no contact with planes or
-// with other resting particles (asleep or immovable), so a settled pile
-// costs one test per particle in each generator and nothing in the
-// resolver.
+// with other resting particles (asleep or immovable). When all sleep, a step
+// is this look and nothing else: no contacts are made.
 //
 // Waking: a contact between a sleeper and an awake particle that is closing
 // or penetrating beyond the margins (World::recordContact) wakes them all,
@@ -39,29 +38,40 @@ struct Sleeping {
   // asleep.
   static const uint8_t kRestSteps = 15;
 
-  static void settle(W& world) {
+  // Returns true when every movable particle sleeps: the step has nothing
+  // to do.
+  static bool settle(W& world) {
     const S limit = W::sleepSpeed();
-    bool still = true;
+    uint8_t& state = world.restSteps();
+    // Without sleepers the first particle that moves ends the look (in a
+    // busy scene, usually the first one); sleepers are all looked at, for
+    // a disturbance.
+    const bool sleepers = (state & kSleepers) != 0;
+    bool still = true, awake = false;
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       P& p = world.particleAt(i);
       if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;
       const bool pushed = !isNull(p.acceleration);
       if (p.isAsleep()) {
         if (pushed || !isNull(p.velocity)) {
-          world.wakeAll();
-          still = false;
+          world.wakeAll();  // state = 0: no sleepers
+          return false;
         }
-      } else if (pushed || !isSlow(p.velocity, limit)) {
+        continue;
+      }
+      awake = true;
+      if (pushed || !isSlow(p.velocity, limit)) {
         still = false;
+        if (!sleepers) break;
       }
     }
-    uint8_t& count = world.restSteps();
+    if (!awake) return sleepers;
     if (!still) {
-      count = 0;
-    } else if (count < kRestSteps) {
-      ++count;
+      state = uint8_t(state & kSleepers);
+    } else if ((state & kCount) < kRestSteps) {
+      ++state;
     } else {
-      count = 0;  // a particle added later counts from zero
+      state = kSleepers;  // a particle added later counts from zero
       for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
         P& p = world.particleAt(i);
         if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;
@@ -69,7 +79,13 @@ struct Sleeping {
         p.velocity = typename W::Vec();
       }
     }
+    return false;
   }
+
+  // World::restSteps(): the steps in a row at rest (kCount), and whether
+  // particles sleep (kSleepers).
+  static const uint8_t kCount = 0x7F;
+  static const uint8_t kSleepers = 0x80;
 
  private:
   static bool isNull(const Vec<S, 2>& v) {

@@ -469,13 +469,19 @@ class World
       if (f.apply != nullptr) f.apply(*this, f, dt);
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
+    // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
+    if (mSettle != nullptr && mSettle(*this)) {
+      mContactCount = 0;
+      mStats = StepStats();
+      TINYPARTICLE_PROFILE_END(kProfileStep);
+      return;
+    }
     // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
     const Scaler<S> byDt(dt);
     StepScalerStore::setStepScaler(&byDt);
     // With rods, the positions move after the rods' velocity solve, so that
     // each moves once, rounded once (the solver calls movePositions()).
     const RodSolve solveRods = RodStore::rodSolver();
-    if (mSettle != nullptr) mSettle(*this);  // sleeping (World/Sleep.hpp)
     integrate(byDt, solveRods == nullptr);
     if (kConstraints != 0) {
       if (solveRods != nullptr) {
@@ -547,7 +553,8 @@ class World
     mSettle = on ? &Sleeping<World>::settle : nullptr;
   }
   bool isSleepingEnabled() const { return mSettle != nullptr; }
-  // For Sleeping<World>: the steps in a row that everything was at rest.
+  // For Sleeping<World>: the steps in a row that everything was at rest,
+  // and whether some particles sleep (0 once all are awake).
   uint8_t& restSteps() { return mRestSteps; }
   void wakeAll() {
     mRestSteps = 0;
@@ -1091,7 +1098,7 @@ class World
   uint16_t mError;
   uint8_t mIterationCap;
   StepStats mStats;
-  void (*mSettle)(World&);  // Sleeping<World>::settle when sleeping is on
+  bool (*mSettle)(World&);  // Sleeping<World>::settle when sleeping is on
   bool mWoke;               // a sleeper woke during this step's contacts
   bool mInContacts;         // the step is making or resolving contacts
   uint8_t mRestSteps;       // steps in a row with everything at rest
