@@ -8,6 +8,8 @@
                              the committed outputs are left alone
     bench.py --only ops,scenes,memory,report
                              some stages (report = tables, plots, README)
+    bench.py --only scenes,report --scenes balls,pile --out DIR
+                             some scenes only, into DIR (while developing)
 
 Runs on the simulated Nano (simavr) through extras/scripts/nano-build and
 extras/scripts/simavr-run, two at a time by default (--jobs). Raw UART logs
@@ -85,11 +87,15 @@ def run_memory(out_dir, build_root, jobs, quick):
     return rows
 
 
-def run_scenes(out_dir, build_root, jobs, quick):
-    rows = scenes.run(build_root, jobs, quick)
+def run_scenes(out_dir, build_root, jobs, quick, names=None):
+    rows, timeline = scenes.run(build_root, jobs, quick, names)
     path = os.path.join(out_dir, "scenes.csv")
     write_csv(path, scenes.COLUMNS, rows)
     log("measured %s (%d rows)" % (name_of(path), len(rows)))
+    if timeline:
+        path = os.path.join(out_dir, "timeline.csv")
+        write_csv(path, scenes.TIMELINE_COLUMNS, timeline)
+        log("measured %s (%d rows)" % (name_of(path), len(timeline)))
     return rows
 
 
@@ -160,7 +166,13 @@ def main():
                     "or a new temporary folder with --quick)")
     ap.add_argument("--only", help="comma-separated stages: " + ",".join(STAGES))
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--scenes", help="comma-separated scene names (balls, pile, "
+                    "cradle...; balls:16 for one count): run only these in the "
+                    "scenes stage; needs --out (the committed scenes.csv holds "
+                    "every scene)")
     args = ap.parse_args()
+    if args.scenes and not args.out:
+        ap.error("--scenes writes a partial scenes.csv: give --out")
 
     stages = args.only.split(",") if args.only else STAGES
     for s in stages:
@@ -187,7 +199,8 @@ def main():
         if "ops" in stages:
             run_ops(staging, build_root, args.jobs, args.quick)
         if "scenes" in stages:
-            run_scenes(staging, build_root, args.jobs, args.quick)
+            run_scenes(staging, build_root, args.jobs, args.quick,
+                       args.scenes.split(",") if args.scenes else None)
         if "memory" in stages:
             run_memory(staging, build_root, args.jobs, args.quick)
         for name in sorted(os.listdir(staging)):

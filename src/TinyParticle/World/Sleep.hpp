@@ -28,6 +28,47 @@
 #include "../Math/Zero.hpp"
 
 namespace tinyparticle {
+namespace detail {
+
+// What the world keeps for sleeping: the look (Sleeping<World>::settle, set
+// by enableSleeping(), so a world that never sleeps links none of it), and
+// its state. Only a world with constraint slots has it (contacts need
+// them); without them it is an empty base class and takes no RAM.
+template <typename Settle, bool kHasConstraints>
+struct SleepState {
+  constexpr SleepState()
+      : mSettle(nullptr), mWoke(false), mInContacts(false), mRestSteps(0) {}
+  Settle settler() const { return mSettle; }
+  void setSettler(Settle settle) { mSettle = settle; }
+  bool woke() const { return mWoke; }
+  void setWoke(bool on) { mWoke = on; }
+  bool inContacts() const { return mInContacts; }
+  void setInContacts(bool on) { mInContacts = on; }
+  uint8_t& restState() { return mRestSteps; }
+
+ private:
+  Settle mSettle;
+  bool mWoke;        // a sleeper woke during this step's contacts
+  bool mInContacts;  // the step is making or resolving contacts
+  uint8_t mRestSteps;
+};
+
+template <typename Settle>
+struct SleepState<Settle, false> {
+  constexpr SleepState() {}
+  Settle settler() const { return nullptr; }
+  void setSettler(Settle) {}
+  bool woke() const { return false; }
+  void setWoke(bool) {}
+  bool inContacts() const { return false; }
+  void setInContacts(bool) {}
+  uint8_t& restState() {
+    static uint8_t none = 0;  // never used: nothing sleeps here
+    return none;
+  }
+};
+
+}  // namespace detail
 
 template <class W>
 struct Sleeping {

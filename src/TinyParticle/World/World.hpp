@@ -73,7 +73,10 @@ class World
       private detail::RodState<
           void (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
                    const Scaler<S>&, S),
-          S, (kConstraints > 0)> {
+          S, (kConstraints > 0)>,
+      private detail::SleepState<
+          bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&),
+          (kConstraints > 0)> {
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
                     kConstraints < kAnchorIndex && kContacts < kAnchorIndex,
@@ -103,17 +106,14 @@ class World
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
+  typedef detail::SleepState<bool (*)(World&), (kConstraints > 0)> SleepStore;
 
  public:
   constexpr World()
       : mContactCount(0),
         mError(0),
         mIterationCap(0),
-        mStats(),
-        mSettle(nullptr),
-        mWoke(false),
-        mInContacts(false),
-        mRestSteps(0) {}
+        mStats() {}
 
   // The standard gravity of every scene: 9.81 m/s^2 along -y.
   static Vec standardGravity() {
@@ -470,7 +470,7 @@ class World
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
-    if (mSettle != nullptr && mSettle(*this)) {
+    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this)) {
       mContactCount = 0;
       mStats = StepStats();
       TINYPARTICLE_PROFILE_END(kProfileStep);
@@ -490,10 +490,10 @@ class World
         TINYPARTICLE_PROFILE_END(kProfileRods);
       }
       TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
-      mInContacts = true;
+      SleepStore::setInContacts(true);
       generateContacts();
       // A contact woke the sleepers: their contacts again, all awake.
-      if (mWoke) generateContacts();
+      if (SleepStore::woke()) generateContacts();
       mStats.contacts = mContactCount;
       TINYPARTICLE_PROFILE_END(kProfileContacts);
       TINYPARTICLE_PROFILE_BEGIN(kProfileResolve);
@@ -502,7 +502,7 @@ class World
       if (cap > 255) cap = 255;
       mStats.iterations =
           Resolver<World>::resolve(*this, byDt, uint8_t(cap));
-      mInContacts = false;
+      SleepStore::setInContacts(false);
       TINYPARTICLE_PROFILE_END(kProfileResolve);
     }
     for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
@@ -538,9 +538,9 @@ class World
     mError = 0;
     mIterationCap = 0;
     mStats = StepStats();
-    mSettle = nullptr;
-    mWoke = false;
-    mRestSteps = 0;
+    SleepStore::setSettler(nullptr);
+    SleepStore::setWoke(false);
+    SleepStore::restState() = 0;
   }
 
   // Sleeping (World/Sleep.hpp), off by default: once every particle has
@@ -550,23 +550,23 @@ class World
   // wakeAll(). Its code is linked only into sketches that call this.
   void enableSleeping(bool on = true) {
     if (!on) wakeAll();
-    mSettle = on ? &Sleeping<World>::settle : nullptr;
+    SleepStore::setSettler(on ? &Sleeping<World>::settle : nullptr);
   }
-  bool isSleepingEnabled() const { return mSettle != nullptr; }
+  bool isSleepingEnabled() const { return SleepStore::settler() != nullptr; }
   // For Sleeping<World>: the steps in a row that everything was at rest,
   // and whether some particles sleep (0 once all are awake).
-  uint8_t& restSteps() { return mRestSteps; }
+  uint8_t& restSteps() { return SleepStore::restState(); }
   void wakeAll() {
-    mRestSteps = 0;
+    SleepStore::restState() = 0;
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
       const bool asleep = p.isAsleep();
       p.flags &= uint8_t(~ParticleType::kAsleep);
       if (!asleep) continue;
-      mWoke = true;
+      SleepStore::setWoke(true);
       // Woken by a contact: it gets the motion of this step that it
       // missed, as if it had been awake.
-      if (mInContacts) catchUp(p);
+      if (SleepStore::inContacts()) catchUp(p);
     }
   }
   // The speed (1/128 m/s, along each axis) below which a particle counts as
@@ -722,7 +722,9 @@ class World
   TINYPARTICLE_NOINLINE void recordContact(uint8_t a, uint8_t b,
                                            const Vec& normal, S penetration,
                                            S separating, uint8_t source) {
-    if (mSettle != nullptr) wakeFor(a, b, penetration, separating);
+    if (SleepStore::settler() != nullptr) {
+      wakeFor(a, b, penetration, separating);
+    }
     uint8_t slot = mContactCount;
     if (slot >= kContacts) {
       mError |= WorldError::kContactsDropped;
@@ -1063,7 +1065,7 @@ class World
 
   // The step's contacts: every generator once, from an empty pool.
   void generateContacts() {
-    mWoke = false;
+    SleepStore::setWoke(false);
     mContactCount = 0;
     mStats.dropped = 0;
     for (uint8_t i = 0; i < kConstraints; ++i) {
@@ -1098,10 +1100,6 @@ class World
   uint16_t mError;
   uint8_t mIterationCap;
   StepStats mStats;
-  bool (*mSettle)(World&);  // Sleeping<World>::settle when sleeping is on
-  bool mWoke;               // a sleeper woke during this step's contacts
-  bool mInContacts;         // the step is making or resolving contacts
-  uint8_t mRestSteps;       // steps in a row with everything at rest
 };
 
 }  // namespace tinyparticle
