@@ -4,7 +4,7 @@
 // The world is one island: it falls asleep as a whole and wakes as a whole.
 // Before each step moves anything, every movable particle is looked at once.
 // When each one's speed along every axis has stayed within
-// World::sleepSpeed() (1/128 m/s), with no force on it, for kRestSteps steps
+// World::sleepSpeed() (1/64 m/s), with no force on it, for kRestSteps steps
 // in a row, they all fall asleep: their velocities become exactly zero. A
 // velocity or a force given to a sleeper since (by the sketch, or a force
 // generator) wakes them all.
@@ -77,7 +77,7 @@ struct Sleeping {
 
   // The steps in a row that every particle must be at rest before all fall
   // asleep.
-  static const uint8_t kRestSteps = 15;
+  static const uint8_t kRestSteps = 31;
 
   // Returns true when every movable particle sleeps: the step has nothing
   // to do.

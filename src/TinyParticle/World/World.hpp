@@ -544,7 +544,7 @@ class World
   }
 
   // Sleeping (World/Sleep.hpp), off by default: once every particle has
-  // moved slower than sleepSpeed() along every axis for 15 steps, all stop
+  // moved slower than sleepSpeed() along every axis for 32 steps, all stop
   // and cost almost nothing until something touches them; then all wake.
   // A sketch that moves a sleeping particle by hand (its position) calls
   // wakeAll(). Its code is linked only into sketches that call this.
@@ -569,9 +569,9 @@ class World
       if (SleepStore::inContacts()) catchUp(p);
     }
   }
-  // The speed (1/128 m/s, along each axis) below which a particle counts as
+  // The speed (1/64 m/s, along each axis) below which a particle counts as
   // at rest for sleeping.
-  static S sleepSpeed() { return detail::Margins<S>::speed() * S(64); }
+  static S sleepSpeed() { return detail::Margins<S>::speed() * S(128); }
 
   // The resolver's iteration cap per step; 0 (the default) means twice the
   // number of contacts of that step.
