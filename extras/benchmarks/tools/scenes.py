@@ -20,6 +20,9 @@ scalar and the same dt. Both report every particle's state at t = 0, 1 s and
                            settled state, e.g. the pile of balls
   cycles_first_300         mean over the first 300 steps (how the engine
                            issue states its lever goal)
+  (timeline.csv)           the mean over every eighth of a second of the 16
+                           balls and the pile at dt = 1/256 s, for the
+                           cycles-against-time plot
   max_link_err             the largest |length / L - 1| of any rod over the
                            run, on the target; ref_max_link_err the same in
                            the reference
@@ -34,6 +37,13 @@ scalar and the same dt. Both report every particle's state at t = 0, 1 s and
 n counts the particles, the fixed ones included, except for the chain and
 the rope, where it counts the beads (the rope has two posts more, the chain
 its pivot).
+
+Contact scenes (issue 10): pile, 16 balls released side by side 1 cm above
+the floor of the box, without sleeping (what resting contacts cost each
+step; the balls scene sleeps once settled); elastic_box, the 16 balls with
+restitution 1 and no gravity (its reference energy: the kinetic energy at
+the start); cradle, Newton's cradle (the first ball's drop m g L (1 - cos
+60 degrees), 0.1 kg, 0.5 m).
 
 Reference energies (what max_energy_err is divided by): the chain of N
 beads, E_fall = m g 0.125 N (N + 1) / 2 (m = 0.05 kg: from level to
