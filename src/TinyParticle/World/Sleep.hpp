@@ -36,21 +36,33 @@ namespace detail {
 // them); without them it is an empty base class and takes no RAM.
 template <typename Settle, bool kHasConstraints>
 struct SleepState {
-  constexpr SleepState()
-      : mSettle(nullptr), mWoke(false), mInContacts(false), mRestSteps(0) {}
+  constexpr SleepState() : mSettle(nullptr), mBits(0) {}
   Settle settler() const { return mSettle; }
   void setSettler(Settle settle) { mSettle = settle; }
-  bool woke() const { return mWoke; }
-  void setWoke(bool on) { mWoke = on; }
-  bool inContacts() const { return mInContacts; }
-  void setInContacts(bool on) { mInContacts = on; }
-  uint8_t& restState() { return mRestSteps; }
+  bool woke() const { return (mBits & kWoke) != 0; }
+  void setWoke(bool on) { setBit(kWoke, on); }
+  bool inContacts() const { return (mBits & kInContacts) != 0; }
+  void setInContacts(bool on) { setBit(kInContacts, on); }
+  uint8_t restCount() const { return uint8_t(mBits & kCount); }
+  bool hasSleepers() const { return (mBits & kSleepers) != 0; }
+  void setRest(uint8_t count, bool sleepers) {
+    mBits = uint8_t((mBits & (kWoke | kInContacts)) | (count & kCount) |
+                    (sleepers ? kSleepers : 0));
+  }
 
  private:
+  // One byte: the steps in a row at rest, whether particles sleep, whether
+  // a sleeper woke during this step's contacts, and whether the step is
+  // making or resolving contacts.
+  static const uint8_t kCount = 0x1F;
+  static const uint8_t kWoke = 0x20;
+  static const uint8_t kInContacts = 0x40;
+  static const uint8_t kSleepers = 0x80;
+  void setBit(uint8_t bit, bool on) {
+    mBits = on ? uint8_t(mBits | bit) : uint8_t(mBits & ~bit);
+  }
   Settle mSettle;
-  bool mWoke;        // a sleeper woke during this step's contacts
-  bool mInContacts;  // the step is making or resolving contacts
-  uint8_t mRestSteps;
+  uint8_t mBits;
 };
 
 template <typename Settle>
@@ -62,10 +74,9 @@ struct SleepState<Settle, false> {
   void setWoke(bool) {}
   bool inContacts() const { return false; }
   void setInContacts(bool) {}
-  uint8_t& restState() {
-    static uint8_t none = 0;  // never used: nothing sleeps here
-    return none;
-  }
+  uint8_t restCount() const { return 0; }
+  bool hasSleepers() const { return false; }
+  void setRest(uint8_t, bool) {}
 };
 
 }  // namespace detail
@@ -83,11 +94,10 @@ struct Sleeping {
   // to do.
   static bool settle(W& world) {
     const S limit = W::sleepSpeed();
-    uint8_t& state = world.restSteps();
     // Without sleepers the first particle that moves ends the look (in a
     // busy scene, usually the first one); sleepers are all looked at, for
     // a disturbance.
-    const bool sleepers = (state & kSleepers) != 0;
+    const bool sleepers = world.hasSleepers();
     bool still = true, awake = false;
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       P& p = world.particleAt(i);
@@ -95,7 +105,7 @@ struct Sleeping {
       const bool pushed = !isNull(p.acceleration);
       if (p.isAsleep()) {
         if (pushed || !isNull(p.velocity)) {
-          world.wakeAll();  // state = 0: no sleepers
+          world.wakeAll();  // no sleepers left
           return false;
         }
         continue;
@@ -107,12 +117,13 @@ struct Sleeping {
       }
     }
     if (!awake) return sleepers;
+    const uint8_t count = world.restCount();
     if (!still) {
-      state = uint8_t(state & kSleepers);
-    } else if ((state & kCount) < kRestSteps) {
-      ++state;
+      world.setRest(0, sleepers);
+    } else if (count < kRestSteps) {
+      world.setRest(uint8_t(count + 1), sleepers);
     } else {
-      state = kSleepers;  // a particle added later counts from zero
+      world.setRest(0, true);  // a particle added later counts from zero
       for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
         P& p = world.particleAt(i);
         if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;
@@ -122,11 +133,6 @@ struct Sleeping {
     }
     return false;
   }
-
-  // World::restSteps(): the steps in a row at rest (kCount), and whether
-  // particles sleep (kSleepers).
-  static const uint8_t kCount = 0x7F;
-  static const uint8_t kSleepers = 0x80;
 
  private:
   static bool isNull(const Vec<S, 2>& v) {

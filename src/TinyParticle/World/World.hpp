@@ -540,7 +540,7 @@ class World
     mStats = StepStats();
     SleepStore::setSettler(nullptr);
     SleepStore::setWoke(false);
-    SleepStore::restState() = 0;
+    SleepStore::setRest(0, false);
   }
 
   // Sleeping (World/Sleep.hpp), off by default: once every particle has
@@ -554,10 +554,14 @@ class World
   }
   bool isSleepingEnabled() const { return SleepStore::settler() != nullptr; }
   // For Sleeping<World>: the steps in a row that everything was at rest,
-  // and whether some particles sleep (0 once all are awake).
-  uint8_t& restSteps() { return SleepStore::restState(); }
+  // and whether some particles sleep (none once all are awake).
+  uint8_t restCount() const { return SleepStore::restCount(); }
+  bool hasSleepers() const { return SleepStore::hasSleepers(); }
+  void setRest(uint8_t count, bool sleepers) {
+    SleepStore::setRest(count, sleepers);
+  }
   void wakeAll() {
-    SleepStore::restState() = 0;
+    SleepStore::setRest(0, false);
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
       const bool asleep = p.isAsleep();
