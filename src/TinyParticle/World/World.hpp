@@ -574,8 +574,9 @@ class World
     }
   }
   // The speed (1/64 m/s, along each axis) below which a particle counts as
-  // at rest for sleeping.
-  static S sleepSpeed() { return detail::Margins<S>::speed() * S(128); }
+  // at rest for sleeping: four units of Q24.8 and Q8.8, the coarsest
+  // scalars, and well below what gravity adds in a step at 1/256 s.
+  static S sleepSpeed() { return S(1.0 / 64); }
 
   // The resolver's iteration cap per step; 0 (the default) means twice the
   // number of contacts of that step.
@@ -1095,7 +1096,8 @@ class World
   void wakeFor(uint8_t a, uint8_t b, S penetration, S separating) {
     const bool asleep = particleAt(a).isAsleep() ||
                         (b < kParticles && particleAt(b).isAsleep());
-    if (asleep && (penetration > contactMargin() || separating < -speedMargin())) {
+    if (asleep &&
+        (penetration > contactMargin() || separating < -speedMargin())) {
       wakeAll();
     }
   }
