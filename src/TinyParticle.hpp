@@ -21,3 +21,4 @@
 #include "TinyParticle/Scenes/Spring.hpp"
 #include "TinyParticle/Scenes/BouncingBalls.hpp"
 #include "TinyParticle/Scenes/Chain.hpp"
+#include "TinyParticle/Scenes/Cradle.hpp"

@@ -4,14 +4,16 @@
 //
 // One build runs one scene with one scalar and one step (SceneRun.h):
 //   SCENE   1 lever, 2 pendulum, 3 spring, 4 balls (BALLS of them),
-//           5 chain (BALLS beads), 6 rope, 7 pendulum_short
+//           5 chain (BALLS beads), 6 rope, 7 pendulum_short, 8 pile (BALLS
+//           of them), 9 elastic_box (BALLS), 10 cradle
 //   SCALAR  1 Q16_16, 2 Q24_8, 3 Float
 //   DIM     2 or 3
 //   RATE    steps per second, dt = 1 / RATE s (e.g. 1024, 256, 64, 200)
 //   SECONDS scene time to run (10 by default)
-// It prints "P ..." state lines at 0, 1 and 10 s and at the end, "M ..." the
-// largest link and energy errors, "T ..." cycle sums, "W ..." error flags,
-// then "E", and sleeps (which ends a simavr run). A chain of 16 beads does
+// It prints "C ..." cycle sums for every eighth of a second as it runs,
+// "P ..." state lines at 0, 1 and 10 s and at the end, "M ..." the largest
+// link and energy errors, "T ..." cycle sums, "W ..." error flags, then "E",
+// and sleeps (which ends a simavr run). A chain of 16 beads does
 // not fit in the Nano's RAM: it runs on an ATmega2560 (nano-build --mega).
 // extras/benchmarks/tools/bench.py builds and runs every combination.
 #ifndef SCENE

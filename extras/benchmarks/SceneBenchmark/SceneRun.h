@@ -10,6 +10,12 @@
 //   5 chain           the whip chain of N beads (Scenes/Chain.hpp)
 //   6 rope            7 damped beads between two posts (Scenes/Chain.hpp)
 //   7 pendulum_short  L = 0.05 m, theta0 = 0.5 rad, 0.1 kg
+//   8 pile            16 balls released at rest 1 cm above the floor, side by
+//                     side: a settled pile, without sleeping (what resting
+//                     contacts cost in every step)
+//   9 elastic_box     16 balls in the box, restitution 1, no gravity
+//                     (Scenes/BouncingBalls.hpp, buildElasticBox)
+//  10 cradle          Newton's cradle (Scenes/Cradle.hpp)
 //
 // A run: build the scene, report the state at t = 0, step it for `seconds`
 // of scene time at dt = 1 / rate s (any rate; the step count is 32 bits),
@@ -36,7 +42,10 @@ enum : uint8_t {
   kBalls = 4,
   kChain = 5,
   kRope = 6,
-  kPendulumShort = 7
+  kPendulumShort = 7,
+  kPile = 8,
+  kElasticBox = 9,
+  kCradle = 10
 };
 
 // Standard gravity as the engine's scenes use it (m/s^2).
@@ -53,6 +62,7 @@ struct SceneSpec<S, Dim, kLever, N> {
   // Falling from level to straight down: m g L.
   static double referenceEnergy() { return 0.1 * kG * 0.15; }
   static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
 };
 template <typename S, uint8_t Dim, uint8_t N>
 typename SceneSpec<S, Dim, kLever, N>::WorldType::Vec
@@ -67,6 +77,7 @@ struct SceneSpec<S, Dim, kPendulum, N> {
   // The swing: m g L (1 - cos theta0).
   static double referenceEnergy() { return 1.0 * kG * 1.0 * (1 - ::cos(0.5)); }
   static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
 };
 
 template <typename S, uint8_t Dim, uint8_t N>
@@ -77,6 +88,7 @@ struct SceneSpec<S, Dim, kPendulumShort, N> {
   }
   static double referenceEnergy() { return 0.1 * kG * 0.05 * (1 - ::cos(0.5)); }
   static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
 };
 
 template <typename S, uint8_t Dim, uint8_t N>
@@ -86,6 +98,7 @@ struct SceneSpec<S, Dim, kSpring, N> {
   // The spring's energy at release: k (0.1 m)^2 / 2.
   static double referenceEnergy() { return 0.5 * 100 * 0.1 * 0.1; }
   static const bool kGravity = false;
+  static const bool kSpringEnergy = true;
 };
 
 template <typename S, uint8_t Dim, uint8_t N>
@@ -94,6 +107,7 @@ struct SceneSpec<S, Dim, kBalls, N> {
   static void build(WorldType& world) { buildBouncingBalls(world, N); }
   static double referenceEnergy() { return 0; }  // bounces lose energy
   static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
 };
 
 template <typename S, uint8_t Dim, uint8_t N>
@@ -105,6 +119,7 @@ struct SceneSpec<S, Dim, kChain, N> {
     return 0.05 * kG * 0.125 * N * (N + 1) / 2;
   }
   static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
 };
 
 template <typename S, uint8_t Dim, uint8_t N>
@@ -113,6 +128,65 @@ struct SceneSpec<S, Dim, kRope, N> {
   static void build(WorldType& world) { buildRope(world); }
   static double referenceEnergy() { return 0; }  // damped: it settles
   static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
+};
+
+template <typename S, uint8_t Dim, uint8_t N>
+struct SceneSpec<S, Dim, kPile, N> {
+  typedef BallsWorld<S, Dim, N> WorldType;
+  static void build(WorldType& world) {
+    typedef typename WorldType::Vec V;
+    V low, high;
+    for (uint8_t k = 0; k < Dim; ++k) high[k] = S(1);
+    world.addBox(low, high, S(0.8));
+    world.addGravity();
+    world.addCollisions(S(0.8));
+    for (uint8_t i = 0; i < N; ++i) {
+      V at;
+      at.x = S(0.03) + S(0.06) * S(int(i));
+      at.y = S(0.04);
+      if (Dim == 3) at[2] = S(0.5);
+      world.addParticle(at, S(0.1), S(0.03));
+    }
+  }
+  static double referenceEnergy() { return 0; }  // it lands and rests
+  static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
+};
+
+// The kinetic energy at the start (J), the elastic box's reference.
+template <typename S, uint8_t Dim, uint8_t N>
+struct SceneSpec<S, Dim, kElasticBox, N> {
+  typedef BallsWorld<S, Dim, N, 8> WorldType;  // two contacts at a time
+  static double start;
+  static void build(WorldType& world) {
+    buildElasticBox(world, N);
+    start = 0;
+    for (uint8_t i = 0; i < N; ++i) {
+      const typename WorldType::ParticleType& p = world.particleAt(i);
+      double v2 = 0;
+      for (uint8_t k = 0; k < Dim; ++k) {
+        const double v = p.velocity[k].toFloat();
+        v2 += v * v;
+      }
+      start += 0.5 / p.inverseMass.toFloat() * v2;
+    }
+  }
+  static double referenceEnergy() { return start; }
+  static const bool kGravity = false;
+  static const bool kSpringEnergy = false;
+};
+template <typename S, uint8_t Dim, uint8_t N>
+double SceneSpec<S, Dim, kElasticBox, N>::start = 0;
+
+template <typename S, uint8_t Dim, uint8_t N>
+struct SceneSpec<S, Dim, kCradle, N> {
+  typedef CradleWorld<S> WorldType;
+  static void build(WorldType& world) { buildCradle(world); }
+  // The first ball's drop: m g L (1 - cos 60 degrees), 0.1 kg, 0.5 m.
+  static double referenceEnergy() { return 0.1 * kG * 0.25; }
+  static const bool kGravity = true;
+  static const bool kSpringEnergy = false;
 };
 
 // The world lives in static storage: a 16-ball world does not fit on the
@@ -199,7 +273,7 @@ class Tracker {
       e += m * (v2 / 2 + (Spec::kGravity ? R(kG) * R(p.position.y.toFloat())
                                          : R(0)));
     }
-    return e + springEnergy<R>(world, !Spec::kGravity);
+    return e + springEnergy<R>(world, Spec::kSpringEnergy);
   }
 
   R mStart;

@@ -1,5 +1,6 @@
 // What the Nano reports during a scene run: the cycles of every step (summed
-// over the first 2 s and over the last second), the state of every particle
+// over the first 2 s, over the last second, and over every eighth of a
+// second for the cycles-against-time plot), the state of every particle
 // at t = 0, 1 s, 10 s and at the end, as the exact bits of the scalar in hex,
 // and the largest link and energy errors of the run.
 #pragma once
@@ -58,7 +59,7 @@ class TargetReport {
  public:
   TargetReport()
       : mFirst(0), mFirstSteps(0), mLast(0), mLastSteps(0), mFirst300(0),
-        mWindow(0) {
+        mWindow(0), mSlice(0), mSliceSteps(0), mSlices(0) {
     // The empty measuring window, taken out of every step.
     cycles::start();
     mWindow = cycles::stop();
@@ -76,6 +77,21 @@ class TargetReport {
     if (step > uint32_t(seconds - 1) * perSecond) {
       mLast += spent;
       ++mLastSteps;
+    }
+    // "C <eighth of a second> <cycles> <steps>", outside the timed span.
+    mSlice += spent;
+    ++mSliceSteps;
+    const uint16_t perSlice = perSecond >= 8 ? perSecond / 8 : 1;
+    if (mSliceSteps >= perSlice) {
+      Serial.print(F("C "));
+      Serial.print(mSlices++);
+      Serial.write(' ');
+      Serial.print(mSlice);
+      Serial.write(' ');
+      Serial.println(mSliceSteps);
+      Serial.flush();
+      mSlice = 0;
+      mSliceSteps = 0;
     }
   }
 
@@ -138,6 +154,9 @@ class TargetReport {
   uint16_t mLastSteps;
   uint32_t mFirst300;
   uint32_t mWindow;
+  uint32_t mSlice;       // cycles of the current eighth of a second
+  uint16_t mSliceSteps;  // and its steps
+  uint16_t mSlices;
 };
 
 }  // namespace scenebench

@@ -62,7 +62,7 @@ int run(uint16_t rate, uint8_t seconds) {
 
 int usage() {
   fprintf(stderr,
-          "usage: SceneReference <scene 1-7> <balls 2|4|8|16 or beads "
+          "usage: SceneReference <scene 1-10> <balls 2|4|8|16 or beads "
           "2|4|8|16> <dim 2|3> <rate 1-4096> [<seconds 1-255>]\n");
   return 2;
 }
@@ -98,6 +98,11 @@ int main(int argc, char** argv) {
       case 16: return run<2, kBalls, 16>(r, s);
     }
   }
+  if (scene == kPile && dim == 2 && n == 16) return run<2, kPile, 16>(r, s);
+  if (scene == kElasticBox && dim == 2 && n == 16) {
+    return run<2, kElasticBox, 16>(r, s);
+  }
+  if (scene == kCradle && dim == 2) return run<2, kCradle, 5>(r, s);
   if (scene == kChain && dim == 2) {
     switch (n) {
       case 2: return run<2, kChain, 2>(r, s);

@@ -8,9 +8,10 @@
                              the committed outputs are left alone
     bench.py --only ops,scenes,memory,report
                              some stages (report = tables, plots, README)
-    bench.py --scenes lever,chain [--out DIR]
+    bench.py --scenes lever,chain,balls:16 [--out DIR]
                              only these scenes (every scalar, dimension and
-                             step of theirs), printed as a table and written
+                             step of theirs; balls:16 for one count),
+                             printed as a table and written
                              to DIR/scenes.csv (a fresh temporary folder by
                              default); the committed outputs are left alone
 
@@ -91,10 +92,14 @@ def run_memory(out_dir, build_root, jobs, quick):
 
 
 def run_scenes(out_dir, build_root, jobs, quick, names=None):
-    rows = scenes.run(build_root, jobs, quick, names)
+    rows, timeline = scenes.run(build_root, jobs, quick, names)
     path = os.path.join(out_dir, "scenes.csv")
     write_csv(path, scenes.COLUMNS, rows)
     log("measured %s (%d rows)" % (name_of(path), len(rows)))
+    if timeline:
+        path = os.path.join(out_dir, "timeline.csv")
+        write_csv(path, scenes.TIMELINE_COLUMNS, timeline)
+        log("measured %s (%d rows)" % (name_of(path), len(timeline)))
     return rows
 
 
@@ -190,8 +195,8 @@ def main():
                     "or a new temporary folder with --quick)")
     ap.add_argument("--only", help="comma-separated stages: " + ",".join(STAGES))
     ap.add_argument("--scenes", help="comma-separated scene names (lever, "
-                    "chain, ...): measure only these, outside the committed "
-                    "outputs")
+                    "chain, balls:16 for one count, ...): measure only these, "
+                    "outside the committed outputs")
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
     if args.scenes:
@@ -222,7 +227,8 @@ def main():
         if "ops" in stages:
             run_ops(staging, build_root, args.jobs, args.quick)
         if "scenes" in stages:
-            run_scenes(staging, build_root, args.jobs, args.quick)
+            run_scenes(staging, build_root, args.jobs, args.quick,
+                       args.scenes.split(",") if args.scenes else None)
         if "memory" in stages:
             run_memory(staging, build_root, args.jobs, args.quick)
         for name in sorted(os.listdir(staging)):

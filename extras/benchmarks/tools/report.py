@@ -139,6 +139,8 @@ def scene_label(r):
         return "pendulum, %s s" % r.get("seconds", "60")
     if r["scene"] == "pendulum_short":
         return "short pendulum"
+    if r["scene"] in ("pile", "elastic_box"):
+        return "%s, N = %s" % (r["scene"].replace("_", " "), r["n"])
     return "%s %sD" % (r["scene"], r["dim"]) if r["scene"] == "lever" else r["scene"]
 
 
@@ -163,6 +165,13 @@ def scenes_markdown(rows, tools, quick):
         "rope, 7 beads damped at 1/s on 8 rods of 0.1 m between posts 0.6 m "
         "apart, 20 s; the short pendulum (L = 0.05 m, theta0 = 0.5 rad, "
         "0.1 kg); and the pendulum swept over step rates for 60 s. "
+        "Contacts (issue 10): the balls sleep once all are at rest "
+        "(World::enableSleeping()); the pile is 16 of those balls released "
+        "side by side 1 cm above the floor, without sleeping: what resting "
+        "contacts cost in every step; the elastic box is the 16 balls with "
+        "restitution 1 and no gravity; the cradle is Newton's cradle "
+        "(Scenes/Cradle.hpp, 5 balls on 0.5 m rods, the first from 60 "
+        "degrees). "
         "n counts the particles, the fixed pivot of the lever and of the "
         "pendulum included, but the beads only for the chain and the rope. "
         "The chain of 16 beads runs on a simulated ATmega2560 (Mega, 16 MHz, "
@@ -189,9 +198,13 @@ def scenes_markdown(rows, tools, quick):
         "the scene's reference energy: E_fall = m g 0.125 N (N + 1) / 2 for "
         "the chains (m = 0.05 kg), the swing m g L (1 - cos theta0) for the "
         "pendulums, m g L for the lever (from level), k (0.1 m)^2 / 2 for "
-        "the spring. The reference columns are the double run's.",
+        "the spring, the first ball's drop m g L (1 - cos 60 degrees) for "
+        "the cradle, the kinetic energy at the start for the elastic box. "
+        "The reference columns are the double run's.",
         "",
         "![Cycles per step against the number of balls](scenes.svg)", "",
+        "![Cycles per step against time, 16 balls and the pile]"
+        "(timeline.svg)", "",
         "## Cycles per step at dt = 1/256 s", ""]
     labels = []
     for r in rows:
@@ -219,6 +232,48 @@ def scenes_markdown(rows, tools, quick):
          for r in rows])
     lines.append("")
     return "\n".join(lines)
+
+
+def timeline_plot(out_dir, tmp):
+    """Cycles per step against time (means over each eighth of a second) for
+    the 16 balls and the pile, from timeline.csv."""
+    rows = read_csv(os.path.join(out_dir, "timeline.csv"))
+    if not rows:
+        return None
+    series = []
+    for scene, style in (("balls", "lw 2"), ("pile", "lw 1 dt 2")):
+        for s in SCENE_SCALARS:
+            pts = [(num(r["t"]), num(r["cycles_per_step"])) for r in rows
+                   if r["scene"] == scene and r["scalar"] == s]
+            if not pts:
+                continue
+            data = os.path.join(tmp, "timeline-%s-%s.dat" % (scene, s))
+            with open(data, "w") as f:
+                for t, c in pts:
+                    f.write("%s %s\n" % (t, c))
+            series.append((scene, s, style, data))
+    if not series:
+        return None
+    out = os.path.join(out_dir, "timeline.svg")
+    plots = ["%s using 1:2 with lines %s lc rgb '%s' title '%s, %s'" % (
+        quote(data), style, COLORS[s],
+        "16 balls (sleeping)" if scene == "balls" else "pile of 16 (awake)", s)
+        for scene, s, style, data in series]
+    script = "\n".join([
+        "set terminal svg size 800,560 font 'sans,11'",
+        "set output %s" % quote(out),
+        "set title 'Cycles per step against time (dt = 1/256 s, ATmega328P; "
+        "means over 1/8 s)'",
+        "set logscale y 10",
+        "set format y \"%.0s%c\"",
+        "set xlabel 'scene time (s)'",
+        "set ylabel 'cycles per step'",
+        "set grid",
+        "set key top right",
+        "plot " + ", \\\n     ".join(plots),
+        ""])
+    gnuplot(script, out)
+    return out
 
 
 def scenes_plot(rows, out_dir, tmp):
@@ -677,6 +732,9 @@ def generate(out_dir, tools, quick=False, update_readme=False):
                 p = plot(scene_rows, out_dir, tmp)
                 if p:
                     log("wrote %s" % os.path.relpath(p, REPO))
+            p = timeline_plot(out_dir, tmp)
+            if p:
+                log("wrote %s" % os.path.relpath(p, REPO))
         mem_rows = read_csv(os.path.join(out_dir, "memory.csv"))
         if mem_rows:
             write(os.path.join(out_dir, "memory.md"),

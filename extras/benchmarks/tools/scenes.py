@@ -20,6 +20,9 @@ scalar and the same dt. Both report every particle's state at t = 0, 1 s and
                            settled state, e.g. the pile of balls
   cycles_first_300         mean over the first 300 steps (how the engine
                            issue states its lever goal)
+  (timeline.csv)           the mean over every eighth of a second of the 16
+                           balls and the pile at dt = 1/256 s, for the
+                           cycles-against-time plot
   max_link_err             the largest |length / L - 1| of any rod over the
                            run, on the target; ref_max_link_err the same in
                            the reference
@@ -34,6 +37,13 @@ scalar and the same dt. Both report every particle's state at t = 0, 1 s and
 n counts the particles, the fixed ones included, except for the chain and
 the rope, where it counts the beads (the rope has two posts more, the chain
 its pivot).
+
+Contact scenes (issue 10): pile, 16 balls released side by side 1 cm above
+the floor of the box, without sleeping (what resting contacts cost each
+step; the balls scene sleeps once settled); elastic_box, the 16 balls with
+restitution 1 and no gravity (its reference energy: the kinetic energy at
+the start); cradle, Newton's cradle (the first ball's drop m g L (1 - cos
+60 degrees), 0.1 kg, 0.5 m).
 
 Reference energies (what max_energy_err is divided by): the chain of N
 beads, E_fall = m g 0.125 N (N + 1) / 2 (m = 0.05 kg: from level to
@@ -106,7 +116,15 @@ SCENES = [
     Scene("rope", 6, 7, 2, 7, [Q16, FLOAT], [256], seconds=20),
     Scene("pendulum_short", 7, 2, 2, 2, [Q16, FLOAT], [256]),
     Scene("pendulum_sweep", 2, 2, 2, 2, [Q16, FLOAT], SWEEP_RATES, seconds=60),
+    Scene("pile", 8, 16, 2, 16, [Q16, FLOAT], [256]),
+    Scene("elastic_box", 9, 16, 2, 16, [Q16, FLOAT], [256]),
+    Scene("cradle", 10, 5, 2, 5, [Q16, FLOAT], [1024, 256]),
 ]
+
+# The runs whose cycles per eighth of a second go to timeline.csv (and the
+# cycles-against-time plot): the 16 balls and the pile at dt = 1/256 s.
+TIMELINE_SCENES = ("balls", "pile")
+TIMELINE_COLUMNS = ["scene", "scalar", "n", "dt_ms", "t", "cycles_per_step"]
 
 # The reference energy of each scene (J) for the drift of the new scenes and
 # for max_energy_err (the sketch divides by the same figures).
@@ -114,6 +132,7 @@ REFERENCE_ENERGY = {
     "chain": lambda sc: chain_energy(sc.count),
     "pendulum_short": lambda sc: 0.1 * G * 0.05 * (1 - math.cos(0.5)),
     "pendulum_sweep": lambda sc: 1.0 * G * 1.0 * (1 - math.cos(0.5)),
+    "cradle": lambda sc: 0.1 * G * 0.5 * (1 - math.cos(math.pi / 3)),
 }
 
 COLUMNS = ["scene", "scalar", "dim", "n", "dt_ms", "cycles_per_step",
@@ -138,6 +157,18 @@ def decode(scalar, text):
     if raw >= 1 << 31:
         raw -= 1 << 32
     return raw / float(1 << frac)
+
+
+def parse_timeline(lines):
+    """[(t at the end of the eighth, mean cycles per step)] from "C" lines."""
+    out = []
+    for line in lines:
+        parts = line.split()
+        if len(parts) == 4 and parts[0] == "C":
+            k, cycles, steps = int(parts[1]), int(parts[2]), int(parts[3])
+            if steps:
+                out.append(((k + 1) / 8.0, cycles / float(steps)))
+    return out
 
 
 def parse_states(lines, scalar=None):
@@ -200,6 +231,8 @@ def energy(scene, state, reference0):
         if scene == "spring":
             stretch = math.sqrt(sum(x * x for x in pos)) - SPRING_REST
             e += 0.5 * SPRING_K * stretch * stretch
+        elif scene == "elastic_box":
+            pass  # no gravity
         else:
             e += m * G * (pos[1] - floor)
     return e
@@ -239,14 +272,16 @@ def host_run(exe, sc, rate):
 
 
 def run(build_root, jobs, quick=False, names=None):
+    """(rows, timeline rows). names: only the scenes of these names."""
     # quick: 2 balls and a chain of 2, Q16.16, dt = 1/256 (a point of the
     # cycles-against-N plots, and every column); names: only these scenes
     scenes = [s for s in SCENES if s.quick] if quick else SCENES
-    if names:
-        unknown = set(names) - set(s.name for s in SCENES)
+    if names:  # "balls", or "balls:16" for one count
+        unknown = set(n.split(":")[0] for n in names) - set(s.name for s in SCENES)
         if unknown:
             raise BenchError("no such scene: %s" % ", ".join(sorted(unknown)))
-        scenes = [s for s in scenes if s.name in names]
+        scenes = [s for s in scenes if s.name in names
+                  or "%s:%d" % (s.name, s.count) in names]
     logs = os.path.join(build_root, "logs")
     os.makedirs(logs, exist_ok=True)
     exe = build_host(build_root)
@@ -279,6 +314,7 @@ def run(build_root, jobs, quick=False, names=None):
 
     refs = {}
     rows = []
+    timeline = []
     for (sc, sl, rate), out in zip(combos, outputs):
         name, n = sc.name, sc.n
         key = (sc.scene_id, sc.count, sc.dim, rate, sc.seconds)
@@ -294,6 +330,11 @@ def run(build_root, jobs, quick=False, names=None):
             rows.append(row)
             continue
         states, cycles, flags, errors = parse_states(out, sl[0])
+        if name in TIMELINE_SCENES and rate == 256 and sc.count == 16:
+            for t, c in parse_timeline(out):
+                timeline.append({"scene": name, "scalar": sl[0], "n": str(n),
+                                 "dt_ms": row["dt_ms"], "t": "%g" % t,
+                                 "cycles_per_step": "%.0f" % c})
         if flags and flags != (0, 0):
             log("%s %s %dD n=%d dt=1/%d: error flags world %d math %d" % (
                 name, sl[0], sc.dim, n, rate, flags[0], flags[1]))
@@ -302,7 +343,7 @@ def run(build_root, jobs, quick=False, names=None):
         row["cycles_last_1s"] = "%.0f" % (last[0] / last[1]) if last else "NA"
         f300 = cycles.get("first300")
         row["cycles_first_300"] = "%.0f" % (f300[0] / f300[1]) if f300 else "NA"
-        chaotic = name == "balls" and n > 2
+        chaotic = name in ("balls", "elastic_box") and n > 2
         row["pos_err_1s"] = "NA" if chaotic else fmt(
             position_error(states[1], ref_states[1]))
         row["pos_err_10s"] = "NA" if chaotic else fmt(
@@ -323,7 +364,8 @@ def run(build_root, jobs, quick=False, names=None):
         for prefix, errs in (("", errors), ("ref_", ref_errors)):
             link, en = errs if errs else (None, None)
             row[prefix + "max_link_err"] = fmt(link) if (
-                link is not None and sc.name not in ("balls", "spring")) else "NA"
+                link is not None and sc.name not in (
+                    "balls", "spring", "pile", "elastic_box")) else "NA"
             row[prefix + "max_energy_err"] = fmt(en)
         rows.append(row)
-    return rows
+    return rows, timeline

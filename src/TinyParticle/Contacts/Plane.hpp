@@ -129,7 +129,7 @@ struct PlaneConstraint {
 
   static bool isTarget(const typename W::ParticleType& p) {
     typedef typename W::ParticleType P;
-    return (p.flags & (P::kInUse | P::kCollides | P::kStatic)) ==
+    return (p.flags & (P::kInUse | P::kCollides | P::kStatic | P::kAsleep)) ==
            (P::kInUse | P::kCollides);
   }
 };

@@ -16,9 +16,10 @@
 //  2. moves both particles out of penetration, in the ratio of their inverse
 //     masses;
 //  3. updates the penetration and separating velocity of only those contacts
-//     that share a particle it moved (none, and no pass over the contacts,
-//     when its particles are in no other contact: a ball alone on the
-//     floor), then finds the next contact to resolve in one pass.
+//     that share a particle it moved, then finds the next contact to resolve
+//     in one pass. Contacts whose particles are in no other contact (a ball
+//     alone on the floor) are resolved first, each once, in one pass: they
+//     neither change nor depend on any other.
 // It stops when nothing is closing or penetrating, or after the iteration
 // cap (default: twice the number of contacts).
 //
@@ -64,8 +65,6 @@ struct Resolver {
       resolveOne(world, contacts[0], byDt, change);
       return 1;
     }
-    uint8_t next = worstOf(contacts, count, closing, deep);
-    if (next == kNoIndex) return 0;
     // The particles in more than one contact: a resolution changes other
     // contacts only through them (a ball alone on the floor touches none).
     Sharing sharing;
@@ -73,8 +72,22 @@ struct Resolver {
       sharing.add(contacts[j].a);
       sharing.add(contacts[j].b);
     }
+    // A contact whose particles are in no other contact changes no other
+    // one, and no other one changes it: it is resolved once, in one pass,
+    // with the same result as when the search below would have reached it
+    // (balls resting on the floor apart from each other), and the search
+    // is left with the contacts that share particles.
     uint8_t iterations = 0;
-    while (iterations < cap) {
+    for (uint8_t j = 0; j < count && iterations < cap; ++j) {
+      C& contact = contacts[j];
+      if (sharing.isShared(contact.a) || sharing.isShared(contact.b)) continue;
+      if (!isActive(contact, closing, deep)) continue;
+      Change change;
+      resolveOne(world, contact, byDt, change);
+      ++iterations;
+    }
+    uint8_t next = worstOf(contacts, count, closing, deep);
+    while (next != kNoIndex && iterations < cap) {
       C& contact = contacts[next];
       Change change;
       resolveOne(world, contact, byDt, change);
@@ -86,7 +99,6 @@ struct Resolver {
         update(world, contacts, count, next, change);
       }
       next = worstOf(contacts, count, closing, deep);
-      if (next == kNoIndex) break;
     }
     return iterations;
   }
@@ -217,6 +229,8 @@ struct Resolver {
     bool movesA = !a.isStatic();
     bool movesB = b != nullptr && !b->isStatic();
     change.movedA = change.movedB = change.velocity = false;
+    // A sleeper pushed by a contact that became active here: all wake.
+    if (a.isAsleep() || (b != nullptr && b->isAsleep())) world.wakeAll();
     if (!movesA && !movesB) {
       change.touchedA = change.touchedB = false;
       contact.penetration = S();

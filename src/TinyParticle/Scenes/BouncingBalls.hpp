@@ -1,7 +1,9 @@
 // The box of balls: N balls of radius 0.03 m and mass 0.1 kg in a 1 m box
 // (its walls are planes), under gravity, colliding with each other and the
 // walls with restitution 0.8. They start on a grid with velocities of up to
-// 1 m/s from a fixed-seed generator, so every run is the same.
+// 1 m/s from a fixed-seed generator, so every run is the same. Sleeping is
+// on (World::enableSleeping()): once the balls have settled into a pile,
+// a step costs little until something disturbs them.
 //
 //   BallsWorld<Q16_16, 2, 16> world;  // N particles, 1 force, walls +
 //   buildBouncingBalls(world, 16);    // collisions, 32 contacts
@@ -18,17 +20,17 @@ namespace tinyparticle {
 template <typename S, uint8_t Dim, uint8_t kBalls, uint8_t kContacts = 32>
 using BallsWorld = World<S, Dim, kBalls, 1, 2 * Dim + 1, kContacts>;
 
-// Adds the walls, gravity, collisions and `count` balls; returns the number
-// of balls added.
+namespace detail {
+// The box, the balls on their grid with their velocities; gravity or not.
 template <class W>
-uint8_t buildBouncingBalls(W& world, uint8_t count, uint16_t seed = 2024) {
+uint8_t buildBallBox(W& world, uint8_t count, uint16_t seed,
+                     typename W::Scalar restitution, bool gravity) {
   typedef typename W::Scalar S;
   typedef typename W::Vec V;
-  const S restitution(0.8);
   V low, high;
   for (uint8_t k = 0; k < W::kDimensions; ++k) high[k] = S(1);
   world.addBox(low, high, restitution);
-  world.addGravity();
+  if (gravity) world.addGravity();
   world.addCollisions(restitution);
 
   // The smallest grid with at least `count` places per layer.
@@ -54,6 +56,26 @@ uint8_t buildBouncingBalls(W& world, uint8_t count, uint16_t seed = 2024) {
     ++added;
   }
   return added;
+}
+}  // namespace detail
+
+// Adds the walls, gravity, collisions and `count` balls; returns the number
+// of balls added.
+template <class W>
+uint8_t buildBouncingBalls(W& world, uint8_t count, uint16_t seed = 2024) {
+  const uint8_t added = detail::buildBallBox(world, count, seed,
+                                             typename W::Scalar(0.8), true);
+  world.enableSleeping();
+  return added;
+}
+
+// The elastic box: the same balls, walls and start, with restitution 1 and
+// no gravity, and no sleeping: nothing comes to rest, and the kinetic
+// energy stays what it was (the collisions' and the walls' exchanges are
+// exact up to rounding). Returns the number of balls added.
+template <class W>
+uint8_t buildElasticBox(W& world, uint8_t count, uint16_t seed = 2024) {
+  return detail::buildBallBox(world, count, seed, typename W::Scalar(1), false);
 }
 
 }  // namespace tinyparticle

@@ -19,7 +19,7 @@ namespace testing {
 struct ChainResult {
   float linkError;    // largest |length / L - 1| over the run
   float energyError;  // largest |E(t) - E(0)| / E_fall
-  uint8_t error;      // world.error() at the end
+  uint16_t error;     // world.error() at the end
 };
 
 // One world type for every length up to kMaxBeads (on the Nano each world

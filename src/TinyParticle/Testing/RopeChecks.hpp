@@ -32,7 +32,7 @@ struct RopeResult {
   float sagError;     // |sag / catenary sag - 1|
   float worstBead;    // largest distance of a bead from its catenary place, m
   float asymmetry;    // largest distance of bead k from bead 8 - k mirrored, m
-  uint8_t error;      // world.error()
+  uint16_t error;     // world.error()
 };
 
 // The rope after 20 s at dt = 1/256 s, compared with the catenary.

@@ -40,7 +40,7 @@ typedef Handle<ConstraintTag> ConstraintId;
 
 // World::error() bits. They stay set until World::clearError().
 namespace WorldError {
-enum : uint8_t {
+enum : uint16_t {
   kNone = 0,
   kParticlesFull = 1,    // addParticle on a full pool
   kForcesFull = 2,       // a force generator on a full pool
@@ -50,6 +50,9 @@ enum : uint8_t {
   kBadArgument = 32,     // e.g. a zero plane normal, a negative mass, dt <= 0
   kRodsUnsatisfied = 64, // rods that cannot all keep their lengths (a loop)
   kNonFinite = 128,      // a float state became inf or NaN (see World::step)
+  // A colliding particle moved farther than its radius in a step, where
+  // particle collisions may miss each other (Contacts/Collisions.hpp).
+  kTunnelling = 256,
 };
 }
 

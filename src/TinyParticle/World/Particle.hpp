@@ -23,6 +23,9 @@ struct Particle {
     // that the step's many immovability tests are a bit test, not a scalar
     // compare (a float compare costs about 45 cycles on AVR).
     kStatic = 4,
+    // Asleep (World::enableSleeping()): not stepped, not tested against
+    // planes or other resting particles, until something wakes it.
+    kAsleep = 8,
   };
 
   VecType position;
@@ -52,6 +55,9 @@ struct Particle {
   bool isImmovable() const { return inverseMass == S(); }
   // isImmovable() as of the start of the current step (see kStatic).
   bool isStatic() const { return (flags & kStatic) != 0; }
+  bool isAsleep() const { return (flags & kAsleep) != 0; }
+  // Immovable or asleep: two such particles need no contact.
+  bool isResting() const { return (flags & (kStatic | kAsleep)) != 0; }
 
   // Mass in kg; an immovable particle reports S::largest().
   S mass() const { return isImmovable() ? S::largest() : S(1) / inverseMass; }

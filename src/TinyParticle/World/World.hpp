@@ -51,6 +51,7 @@
 #include "Margins.hpp"
 #include "Particle.hpp"
 #include "RodState.hpp"
+#include "Sleep.hpp"
 #include "Slots.hpp"
 #include "UniformAcceleration.hpp"
 
@@ -75,7 +76,10 @@ class World
       private detail::RodState<
           void (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
                    const Scaler<S>&, S),
-          S, (kConstraints > 0)> {
+          S, (kConstraints > 0)>,
+      private detail::SleepState<
+          bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&),
+          (kConstraints > 0)> {
   static_assert(IsScalar<S>::value, TINYPARTICLE_SCALAR_MESSAGE);
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
@@ -106,6 +110,7 @@ class World
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
+  typedef detail::SleepState<bool (*)(World&), (kConstraints > 0)> SleepStore;
 
  public:
   constexpr World()
@@ -476,6 +481,13 @@ class World
       if (f.apply != nullptr) f.apply(*this, f, dt);
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
+    // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
+    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this)) {
+      mContactCount = 0;
+      mStats = StepStats();
+      TINYPARTICLE_PROFILE_END(kProfileStep);
+      return;
+    }
     // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
     const Scaler<S> byDt(dt);
     StepScalerStore::setStepScaler(&byDt);
@@ -490,12 +502,10 @@ class World
         TINYPARTICLE_PROFILE_END(kProfileRods);
       }
       TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
-      mContactCount = 0;
-      mStats.dropped = 0;
-      for (uint8_t i = 0; i < kConstraints; ++i) {
-        ConstraintSlot& c = constraintAt(i);
-        if (c.generate != nullptr) c.generate(*this, c, i);
-      }
+      SleepStore::setInContacts(true);
+      generateContacts();
+      // A contact woke the sleepers: their contacts again, all awake.
+      if (SleepStore::woke()) generateContacts();
       mStats.contacts = mContactCount;
       const uint16_t asked = uint16_t(mContactCount + mStats.dropped);
       if (asked > mStats.peakContacts) {
@@ -508,6 +518,7 @@ class World
       if (cap > 255) cap = 255;
       mStats.iterations =
           Resolver<World>::resolve(*this, byDt, uint8_t(cap));
+      SleepStore::setInContacts(false);
       TINYPARTICLE_PROFILE_END(kProfileResolve);
       checkFiniteAfterContacts();
     }
@@ -544,7 +555,45 @@ class World
     mError = 0;
     mIterationCap = 0;
     mStats = StepStats();
+    SleepStore::setSettler(nullptr);
+    SleepStore::setWoke(false);
+    SleepStore::setRest(0, false);
   }
+
+  // Sleeping (World/Sleep.hpp), off by default: once every particle has
+  // moved slower than sleepSpeed() along every axis for 32 steps, all stop
+  // and cost almost nothing until something touches them; then all wake.
+  // A sketch that moves a sleeping particle by hand (its position) calls
+  // wakeAll(). Its code is linked only into sketches that call this.
+  void enableSleeping(bool on = true) {
+    if (!on) wakeAll();
+    SleepStore::setSettler(on ? &Sleeping<World>::settle : nullptr);
+  }
+  bool isSleepingEnabled() const { return SleepStore::settler() != nullptr; }
+  // For Sleeping<World>: the steps in a row that everything was at rest,
+  // and whether some particles sleep (none once all are awake).
+  uint8_t restCount() const { return SleepStore::restCount(); }
+  bool hasSleepers() const { return SleepStore::hasSleepers(); }
+  void setRest(uint8_t count, bool sleepers) {
+    SleepStore::setRest(count, sleepers);
+  }
+  void wakeAll() {
+    SleepStore::setRest(0, false);
+    for (uint8_t i = 0; i < kParticles; ++i) {
+      ParticleType& p = particleAt(i);
+      const bool asleep = p.isAsleep();
+      p.flags &= uint8_t(~ParticleType::kAsleep);
+      if (!asleep) continue;
+      SleepStore::setWoke(true);
+      // Woken by a contact: it gets the motion of this step that it
+      // missed, as if it had been awake.
+      if (SleepStore::inContacts()) catchUp(p);
+    }
+  }
+  // The speed (1/64 m/s, along each axis) below which a particle counts as
+  // at rest for sleeping: four units of Q24.8 and Q8.8, the coarsest
+  // scalars, and well below what gravity adds in a step at 1/256 s.
+  static S sleepSpeed() { return S(1.0 / 64); }
 
   // The resolver's iteration cap per step; 0 (the default) means twice the
   // number of contacts of that step.
@@ -554,9 +603,9 @@ class World
   uint8_t contactCount() const { return mContactCount; }
 
   // WorldError bits, sticky until clearError().
-  uint8_t error() const { return mError; }
+  uint16_t error() const { return mError; }
   void clearError() { mError = 0; }
-  void raiseError(uint8_t bits) { mError |= bits; }
+  void raiseError(uint16_t bits) { mError |= bits; }
 
   // ---- For generators, the renderer and tests ----------------------------
   // Slot access by index, without checks: index < capacity.
@@ -697,6 +746,9 @@ class World
   TINYPARTICLE_NOINLINE void recordContact(uint8_t a, uint8_t b,
                                            const Vec& normal, S penetration,
                                            S separating, uint8_t source) {
+    if (SleepStore::settler() != nullptr) {
+      wakeFor(a, b, penetration, separating);
+    }
     uint8_t slot = mContactCount;
     if (slot >= kContacts) {
       mError |= WorldError::kContactsDropped;
@@ -822,8 +874,8 @@ class World
 
   // In use and movable: what the integrator steps.
   static bool isMoving(const ParticleType& p) {
-    return (p.flags & (ParticleType::kInUse | ParticleType::kStatic)) ==
-           ParticleType::kInUse;
+    return (p.flags & (ParticleType::kInUse | ParticleType::kStatic |
+                       ParticleType::kAsleep)) == ParticleType::kInUse;
   }
 
   // x += v dt; false (and the particle stopped, see nonFinitePosition())
@@ -1070,8 +1122,42 @@ class World
     return id;
   }
 
+  // The step's contacts: every generator once, from an empty pool.
+  void generateContacts() {
+    SleepStore::setWoke(false);
+    mContactCount = 0;
+    mStats.dropped = 0;
+    for (uint8_t i = 0; i < kConstraints; ++i) {
+      ConstraintSlot& c = constraintAt(i);
+      if (c.generate != nullptr) c.generate(*this, c, i);
+    }
+  }
+
+  // The integration of this step for a particle woken after it (it was
+  // asleep: no accumulated force, no velocity).
+  void catchUp(ParticleType& p) {
+    const Scaler<S>& byDt = StepScalerStore::stepScaler();
+    if (kForces != 0) {
+      const Vec& uniform = UniformStore::uniform();
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (!detail::isZero(uniform[k])) p.velocity[k] += byDt(uniform[k]);
+      }
+    }
+    moveParticle(p, byDt);
+  }
+
+  // A contact of a sleeper that is closing or penetrating wakes everyone.
+  void wakeFor(uint8_t a, uint8_t b, S penetration, S separating) {
+    const bool asleep = particleAt(a).isAsleep() ||
+                        (b < kParticles && particleAt(b).isAsleep());
+    if (asleep &&
+        (penetration > contactMargin() || separating < -speedMargin())) {
+      wakeAll();
+    }
+  }
+
   uint8_t mContactCount;
-  uint8_t mError;
+  uint16_t mError;
   uint8_t mIterationCap;
   StepStats mStats;
 };
