@@ -114,8 +114,8 @@ class World
 
  public:
   constexpr World()
-      : mContactCount(0),
-        mError(0),
+      : mError(0),
+        mContactCount(0),
         mIterationCap(0),
         mStats() {}
 
@@ -1156,8 +1156,9 @@ class World
     }
   }
 
-  uint8_t mContactCount;
+  // The 16-bit field first: no padding byte between the fields.
   uint16_t mError;
+  uint8_t mContactCount;
   uint8_t mIterationCap;
   StepStats mStats;
 };
