@@ -41,7 +41,7 @@ test(squareWithDiagonalHolds) {
     }
   }
   assertLess(worst, 0.01f);
-  assertEqual(w.error() & WorldError::kRodsUnsatisfied, 0);
+  assertEqual((uint16_t) (w.error() & WorldError::kRodsUnsatisfied), (uint16_t) 0);
 }
 
 // A triangle whose sides (0.1, 0.1, 0.3) break the triangle inequality:
@@ -55,7 +55,7 @@ test(impossibleLoopIsFlaggedAndBounded) {
   w.addRod(b, c, S(0.1));
   w.addRod(c, a, S(0.3));
   for (uint16_t k = 0; k < 512; ++k) w.step(S(1.0 / 256));
-  assertNotEqual(w.error() & WorldError::kRodsUnsatisfied, 0);
+  assertNotEqual((uint16_t) (w.error() & WorldError::kRodsUnsatisfied), (uint16_t) 0);
   for (uint8_t i = 0; i < 3; ++i) {
     assertLess(fabs(w.particleAt(i).position.x).toFloat(), 10.0f);
     assertLess(fabs(w.particleAt(i).position.y).toFloat(), 10.0f);
@@ -79,7 +79,7 @@ test(removedRodLetsGo) {
   assertNear(w.particle(p2)->velocity.y.toFloat(), -9.81f * 0.25f, 0.05f);
   const float l1 = w.particle(p1)->position.magnitude().toFloat();
   assertNear(l1, 0.1f, 0.0005f);
-  assertEqual(w.error(), (uint8_t) 0);
+  assertEqual(w.error(), (uint16_t) 0);
 }
 
 // 1 kg and 1000 kg on a 0.5 m rod, no gravity, spinning at 2 m/s: the rod

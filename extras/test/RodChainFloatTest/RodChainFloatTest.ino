@@ -14,7 +14,7 @@ test(chainOfEightAt256Hz) {
   const ChainResult r = ChainChecks<Float>::run(8, 256, 2560);
   assertLess(r.linkError, 0.005f);
   assertLess(r.energyError, 0.05f);
-  assertEqual(r.error, (uint8_t) 0);
+  assertEqual(r.error, (uint16_t) 0);
 }
 
 #if defined(EPOXY_DUINO)

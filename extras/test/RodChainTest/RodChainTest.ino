@@ -16,14 +16,14 @@ test(chainOfEightAt256Hz) {
   const ChainResult r = ChainChecks<S>::run(8, 256, 2560);
   assertLess(r.linkError, 0.005f);
   assertLess(r.energyError, 0.05f);
-  assertEqual(r.error, (uint8_t) 0);
+  assertEqual(r.error, (uint16_t) 0);
 }
 
 test(doublePendulumAt1024Hz) {
   const ChainResult r = ChainChecks<S>::run(2, 1024, 10240);
   assertLess(r.linkError, 0.005f);
   assertLess(r.energyError, 0.05f);
-  assertEqual(r.error, (uint8_t) 0);
+  assertEqual(r.error, (uint16_t) 0);
 }
 
 #if defined(EPOXY_DUINO)

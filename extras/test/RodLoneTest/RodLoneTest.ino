@@ -100,7 +100,7 @@ test(endMovedFarOffComesBack) {
   assertLess(::fabsf(end.position.magnitude().toFloat() / 0.15f - 1),
              0.005f);
   assertLess(fastest, 1.05f * 1.7155f);
-  assertEqual(w.error(), (uint8_t) 0);
+  assertEqual(w.error(), (uint16_t) 0);
 }
 
 void setup() {

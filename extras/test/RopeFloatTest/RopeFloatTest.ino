@@ -32,7 +32,7 @@ test(ropeFloatHangsInTheCatenary) {
   assertLess(r.sagError, 0.005f);
   assertLess(r.worstBead, 0.001f);
   assertLess(r.asymmetry, 0.001f);
-  assertEqual(r.error, (uint8_t) 0);
+  assertEqual(r.error, (uint16_t) 0);
 }
 
 void setup() {

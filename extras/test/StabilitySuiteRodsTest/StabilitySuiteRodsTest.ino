@@ -1,6 +1,7 @@
-// The stability suite of issue 13, Q16.16: the rod cases (the undamped
-// pendulum, a chain of 8 rods, a 1:1000 mass ratio on a rod, a rod of
-// zero length and tiny vectors). StabilitySuiteTest has the others. The
+// The stability suite of issue 13, Q16.16: the rod cases in motion (the
+// undamped pendulum, a chain of 8 rods). StabilitySuiteRodEdgesTest has the
+// rod edge cases, StabilitySuiteTest the others (one sketch would not fit
+// the Nano's flash). The
 // cases and bounds are in src/TinyParticle/Testing/StabilityCases.hpp.
 #include <AUnit.h>
 #include <TinyParticle.h>
@@ -16,8 +17,6 @@ test(Pendulum_Q16_16) {
   assertTrue(Cases::checkPendulum(100000UL));
 }
 test(Chain_Q16_16) { assertTrue(Cases::checkChain()); }
-test(MassRatioRod_Q16_16) { assertTrue(Cases::checkMassRatioRod()); }
-test(TinyVectors_Q16_16) { assertTrue(Cases::checkTinyVectors()); }
 
 void setup() {
 #if !defined(EPOXY_DUINO)
