@@ -474,8 +474,9 @@ def loop_rows(devs):
     conv = sum(d["adc_conversions"] for d in devs) / max(1, sum(d["steps"] for d in devs))
     row("5 loop: passes with a step", "all runs",
         "median %d, 90th percentile %d cycles; without Serial output: median %d, worst %d; "
-        "%.2f blocking analogRead() conversions per step, each 13 ADC clocks x 128 = 1,664 "
-        "cycles (datasheet): about %d cycles of sensing" % (
+        "%.2f ADC conversions per step, each 13 ADC clocks x 128 = 1,664 cycles "
+        "(datasheet), about %d cycles of conversion per step, which the firmware "
+        "starts and collects without waiting" % (
             stepping[len(stepping) // 2], stepping[len(stepping) * 9 // 10],
             quiet[len(quiet) // 2], quiet[-1], conv, round(conv * 1664)),
         "reported", None)
