@@ -259,21 +259,17 @@ def timeline_plot(out_dir, tmp):
         quote(data), style, COLORS[s],
         "16 balls (sleeping)" if scene == "balls" else "pile of 16 (awake)", s)
         for scene, s, style, data in series]
-    script = "\n".join([
-        "set terminal svg size 800,560 font 'sans,11'",
-        "set output %s" % quote(out),
-        "set title 'Cycles per step against time (dt = 1/256 s, ATmega328P; "
-        "means over 1/8 s)'",
-        "set logscale y 10",
-        "set format y \"%.0s%c\"",
-        "set xlabel 'scene time (s)'",
-        "set ylabel 'cycles per step'",
-        "set grid",
-        "set key top right",
-        "plot " + ", \\\n     ".join(plots),
-        ""])
-    gnuplot(script, out)
-    return out
+    return svg_plot(
+        out, "Cycles per step against time (dt = 1/256 s, ATmega328P; "
+        "means over 1/8 s)",
+        [
+            "set logscale y 10",
+            "set format y \"%.0s%c\"",
+            "set xlabel 'scene time (s)'",
+            "set ylabel 'cycles per step'",
+            "set key top right",
+        ],
+        plots)
 
 
 def scenes_plot(rows, out_dir, tmp):
@@ -299,24 +295,20 @@ def scenes_plot(rows, out_dir, tmp):
                      "title '%s, first 2 s'" % (quote(data), COLORS[s], s))
         plots.append("%s using 1:3 with linespoints pt 6 lw 1 dt 2 lc rgb '%s' "
                      "title '%s, settled (9-10 s)'" % (quote(data), COLORS[s], s))
-    script = "\n".join([
-        "set terminal svg size 800,560 font 'sans,11'",
-        "set output %s" % quote(out),
-        "set title 'Balls in a box: cycles per step against N (dt = 1/256 s, ATmega328P)'",
-        "set logscale x 2",
-        "set logscale y 10",
-        "set xrange [1.7:19]",
-        "set xtics (2, 4, 8, 16)",
-        "set format y \"%.0s%c\"",
-        "set mytics 10",
-        "set xlabel 'balls'",
-        "set ylabel 'cycles per step'",
-        "set grid",
-        "set key top left",
-        "plot " + ", \\\n     ".join(plots),
-        ""])
-    gnuplot(script, out)
-    return out
+    return svg_plot(
+        out, 'Balls in a box: cycles per step against N (dt = 1/256 s, ATmega328P)',
+        [
+            "set logscale x 2",
+            "set logscale y 10",
+            "set xrange [1.7:19]",
+            "set xtics (2, 4, 8, 16)",
+            "set format y \"%.0s%c\"",
+            "set mytics 10",
+            "set xlabel 'balls'",
+            "set ylabel 'cycles per step'",
+            "set key top left",
+        ],
+        plots)
 
 
 def growth(rows, r):
@@ -426,24 +418,20 @@ def chains_plot(rows, out_dir, tmp):
     plots.append("%g * (x / %d) ** (log(2.1) / log(2)) with lines dt 2 lw 1 "
                  "lc rgb '#555555' title 'goal: x2.1 per doubling (from %s, N = %d)'"
                  % (base_c, base_n, series[0][0], base_n))
-    script = "\n".join([
-        "set terminal svg size 800,560 font 'sans,11'",
-        "set output %s" % quote(out),
-        "set title 'Chain of rigid links: cycles per step against N (dt = 1/256 s; "
-        "N = 16 on an ATmega2560)'",
-        "set logscale x 2",
-        "set logscale y 10",
-        "set xrange [1.7:19]",
-        "set xtics (2, 4, 8, 16)",
-        "set format y \"%.0s%c\"",
-        "set xlabel 'beads N'",
-        "set ylabel 'cycles per step'",
-        "set grid",
-        "set key bottom right",
-        "plot " + ", \\\n     ".join(plots),
-        ""])
-    gnuplot(script, out)
-    return out
+    return svg_plot(
+        out, "Chain of rigid links: cycles per step against N (dt = 1/256 s; "
+        "N = 16 on an ATmega2560)",
+        [
+            "set logscale x 2",
+            "set logscale y 10",
+            "set xrange [1.7:19]",
+            "set xtics (2, 4, 8, 16)",
+            "set format y \"%.0s%c\"",
+            "set xlabel 'beads N'",
+            "set ylabel 'cycles per step'",
+            "set key bottom right",
+        ],
+        plots)
 
 
 def pendulum_plot(rows, out_dir, tmp):
@@ -472,22 +460,18 @@ def pendulum_plot(rows, out_dir, tmp):
         quote(data), 1 if s == "double" else 2, "dt 2 " if s == "double" else "",
         colors[s], s + (" (reference)" if s == "double" else ""))
         for s, data in series]
-    script = "\n".join([
-        "set terminal svg size 800,560 font 'sans,11'",
-        "set output %s" % quote(out),
-        "set title 'Pendulum (1 m, 0.5 rad, 60 s): largest energy error against step rate'",
-        "set logscale xy",
-        "set xrange [100:2600]",
-        "set xtics (128, 256, 512, 1024, 2048)",
-        "set format y '10^{%L}'",
-        "set xlabel 'steps per second'",
-        "set ylabel 'max |E(t) - E(0)| / (m g L (1 - cos theta0))'",
-        "set grid",
-        "set key top right",
-        "plot " + ", \\\n     ".join(plots),
-        ""])
-    gnuplot(script, out)
-    return out
+    return svg_plot(
+        out, 'Pendulum (1 m, 0.5 rad, 60 s): largest energy error against step rate',
+        [
+            "set logscale xy",
+            "set xrange [100:2600]",
+            "set xtics (128, 256, 512, 1024, 2048)",
+            "set format y '10^{%L}'",
+            "set xlabel 'steps per second'",
+            "set ylabel 'max |E(t) - E(0)| / (m g L (1 - cos theta0))'",
+            "set key top right",
+        ],
+        plots)
 
 
 # ---------------------------------------------------------------------------
@@ -535,6 +519,21 @@ def memory_markdown(rows, tools, quick):
 # ---------------------------------------------------------------------------
 # plots
 
+def svg_plot(out, title, settings, plots, size="800,560"):
+    """An SVG plot at out: the house style (terminal, font, grid) around a
+    plot's own settings and plot clauses; returns out."""
+    script = "\n".join(
+        ["set terminal svg size %s font 'sans,11'" % size,
+         "set output %s" % quote(out),
+         "set title %s" % quote(title)] +
+        settings +
+        ["set grid",
+         "plot " + ", \\\n     ".join(plots),
+         ""])
+    gnuplot(script, out)
+    return out
+
+
 def gnuplot(script, out_path):
     if not shutil.which("gnuplot"):
         raise BenchError("gnuplot is missing; apt-get install -y gnuplot")
@@ -579,21 +578,17 @@ def ops_plot(rows, out_dir, tmp):
             quote(data), COLORS[t], t.replace("_", " ")))
         plots.append("%s using 1:2:3 with labels font ',7' offset char 0.3,0.4 "
                      "left tc rgb '%s' notitle" % (quote(data), COLORS[t]))
-    script = "\n".join([
-        "set terminal svg size 960,640 font 'sans,11'",
-        "set output %s" % quote(out),
-        "set title 'What accuracy costs: worst error against cycles per call (ATmega328P)'",
-        "set logscale xy",
-        "set format y '10^{%L}'",
-        "set xlabel 'cycles per call (simavr, avr-gcc -Os)'",
-        "set ylabel 'worst absolute error'",
-        "set grid",
-        "set key top left",
-        "set offsets 0, 0, graph 0.05, graph 0.05",
-        "plot " + ", \\\n     ".join(plots),
-        ""])
-    gnuplot(script, out)
-    return out
+    return svg_plot(
+        out, 'What accuracy costs: worst error against cycles per call (ATmega328P)',
+        [
+            "set logscale xy",
+            "set format y '10^{%L}'",
+            "set xlabel 'cycles per call (simavr, avr-gcc -Os)'",
+            "set ylabel 'worst absolute error'",
+            "set key top left",
+            "set offsets 0, 0, graph 0.05, graph 0.05",
+        ],
+        plots, size="960,640")
 
 
 # ---------------------------------------------------------------------------
