@@ -950,37 +950,50 @@ inline uint32_t shiftedTo(uint32_t normalized, uint8_t n) {
   return normalized >> (32 - n);
 }
 
+// Each kRecip entry's first and last value (end 0, 1) at each bit length n
+// (full) or at one n per entry and end (subset: n = 1 + (i iStep + end
+// endStep) % 32), +-3 (d): edge(i, end, n, d, x, h) for each such x that is
+// nonzero and at most 2^31, with h a scrambled hash of (i, end, n, d).
+// Divide and atan2 both look up kRecip by the top byte of their divisor.
+template <typename Edge>
+void forEachRecipEdge(bool full, uint8_t iStep, uint8_t endStep, Edge edge) {
+  for (uint8_t i = 0; i < 128; ++i) {
+    for (uint8_t end = 0; end < 2; ++end) {
+      const uint32_t dn = end ? ((uint32_t(129 + i) << 24) - 1)
+                              : (uint32_t(128 + i) << 24);
+      for (uint8_t n = 1; n <= 32; ++n) {
+        if (!full && n != 1 + (i * iStep + end * endStep) % 32u) continue;
+        const uint32_t x0 = shiftedTo(dn, n);
+        for (int8_t d = -3; d <= 3; ++d) {
+          const uint32_t x = x0 + uint32_t(int32_t(d));
+          if (x == 0 || x > 0x80000000u) continue;
+          const uint32_t h = scramble((uint32_t(i) << 16) ^ (uint32_t(end) << 15) ^
+                                      (uint32_t(n) << 8) ^ uint32_t(d + 3));
+          edge(i, end, n, d, x, h);
+        }
+      }
+    }
+  }
+}
+
 template <typename V>
 void enumerateDiv(bool full, V& v) {
   edgePairs(full, false, v);
   // Each kRecip entry's first and last divisor, at each bit length (full)
   // or one per entry and end (subset), +-3; numerators: log-uniform, one
   // with a quotient near 2^31, one near 2^16 (the first quotient word).
-  for (uint8_t i = 0; i < 128; ++i) {
-    for (uint8_t end = 0; end < 2; ++end) {
-      const uint32_t dn = end ? ((uint32_t(129 + i) << 24) - 1)
-                              : (uint32_t(128 + i) << 24);
-      for (uint8_t n = 1; n <= 32; ++n) {
-        if (!full && n != 1 + (i * 7u + end * 3u) % 32) continue;
-        const uint32_t mb0 = shiftedTo(dn, n);
-        for (int8_t d = -3; d <= 3; ++d) {
-          const uint32_t mb = mb0 + uint32_t(int32_t(d));
-          if (mb == 0 || mb > 0x80000000u) continue;
-          const uint32_t h = scramble((uint32_t(i) << 16) ^ (uint32_t(end) << 15) ^
-                                      (uint32_t(n) << 8) ^ uint32_t(d + 3));
-          const bool sa = h & 1, sb = h & 2;
-          const int32_t b = withSign(mb, sb);
-          v(withSign(logUniform(h >> 2, 31), sa), b);
-          if (mb <= 0x10000u) {
-            v(withSign(mb << 15, sa), b);
-            v(withSign((mb << 15) - 1 - (h >> 30), sa), b);
-          }
-          v(withSign(mb < 0x7ffffffdu ? mb + (h >> 30) : mb, sa), b);
-          v(withSign(mb - 1, sa), b);
-        }
-      }
+  forEachRecipEdge(full, 7, 3, [&v](uint8_t, uint8_t, uint8_t, int8_t,
+                                    uint32_t mb, uint32_t h) {
+    const bool sa = h & 1, sb = h & 2;
+    const int32_t b = withSign(mb, sb);
+    v(withSign(logUniform(h >> 2, 31), sa), b);
+    if (mb <= 0x10000u) {
+      v(withSign(mb << 15, sa), b);
+      v(withSign((mb << 15) - 1 - (h >> 30), sa), b);
     }
-  }
+    v(withSign(mb < 0x7ffffffdu ? mb + (h >> 30) : mb, sa), b);
+    v(withSign(mb - 1, sa), b);
+  });
 }
 
 // Square roots: each kSqrt entry's first and last argument at each shift
@@ -1041,31 +1054,18 @@ void enumerateAtan2(bool full, V& v) {
   // Each kRecip entry's first and last big magnitude, at each bit length
   // (full) or one per entry and end (subset), +-3, with a ratio that walks
   // through the kAtan entries; signs and the larger of |y|, |x| vary.
-  for (uint8_t i = 0; i < 128; ++i) {
-    for (uint8_t end = 0; end < 2; ++end) {
-      const uint32_t dn = end ? ((uint32_t(129 + i) << 24) - 1)
-                              : (uint32_t(128 + i) << 24);
-      for (uint8_t n = 1; n <= 32; ++n) {
-        if (!full && n != 1 + (i * 5u + end * 11u) % 32) continue;
-        const uint32_t big0 = shiftedTo(dn, n);
-        for (int8_t d = -3; d <= 3; ++d) {
-          const uint32_t big = big0 + uint32_t(int32_t(d));
-          if (big == 0 || big > 0x80000000u) continue;
-          const uint32_t h = scramble((uint32_t(i) << 16) ^ (uint32_t(end) << 15) ^
-                                      (uint32_t(n) << 8) ^ uint32_t(d + 3));
-          const uint32_t j = (i * 5u + n + end + uint32_t(d + 3)) % 129;
-          const uint32_t small = uint32_t((uint64_t(big) * j + 127) / 128);
-          const int32_t sb = withSign(big, h & 1);
-          const int32_t ss = withSign(small, h & 2);
-          if (h & 4) {
-            v(sb, ss);
-          } else {
-            v(ss, sb);
-          }
-        }
-      }
+  forEachRecipEdge(full, 5, 11, [&v](uint8_t i, uint8_t end, uint8_t n, int8_t d,
+                                     uint32_t big, uint32_t h) {
+    const uint32_t j = (i * 5u + n + end + uint32_t(d + 3)) % 129;
+    const uint32_t small = uint32_t((uint64_t(big) * j + 127) / 128);
+    const int32_t sb = withSign(big, h & 1);
+    const int32_t ss = withSign(small, h & 2);
+    if (h & 4) {
+      v(sb, ss);
+    } else {
+      v(ss, sb);
     }
-  }
+  });
   // Each kAtan entry's edge: small = big j / 128 + d, for a few bigs.
   for (uint16_t j = 0; j <= 128; ++j) {
     for (uint8_t k = 0; k < 8; ++k) {
