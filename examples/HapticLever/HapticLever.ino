@@ -377,6 +377,11 @@ bool writeStatus() {
 // ---- Setup and loop ------------------------------------------------------
 void setup() {
   Serial.begin(115200);
+  // The push starts from the sensors as they are (a hand may already be on
+  // the lever), not from zero: a push from nothing would kick the weight.
+  downNewtons = fsrNewtons(analogRead(kFsrDownPin));
+  upNewtons = fsrNewtons(analogRead(kFsrUpPin));
+  push = downNewtons - upNewtons;
   leverServo.attach(kServoPin, kServoMinUs, kServoMaxUs);
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);

@@ -5,6 +5,7 @@
 //   hil run --elf E --seconds T [options]   one scenario run (see usage())
 //   hil reference --length L --seconds T [--force P] [--theta0 DEG]
 //                                           the physics reference alone
+//   hil sense --hand N                      the FSR readings a steady push gives
 //   hil selftest                            checks of the model and reference
 //
 // `run` prints "result key=value" lines on stdout (simavr may print other
@@ -211,9 +212,6 @@ static void write_trace_line(double t) {
   Virtual v;
   memset(&v, 0, sizeof v);
   read_virtual(&v);
-  printf("result serial_layout_ok=%d\n", sim.serial_ok);
-  printf("result serial_tx_full_s=%.6f\n",
-         sim.tx_full_steps * (MODEL_CYCLES / F_CPU_HZ));
   const Device* d = &sim.dev;
   fprintf(sim.trace,
           "%.5f,%.4f,%.4f,%.4f,%.1f,%.4f,%.2f,%.4f,%.4f,%.4f,%d,%d,%.4f,%d\n",
@@ -274,6 +272,7 @@ static void usage(void) {
           "          [--trace CSV] [--trace-every STEPS] [--passes CSV] [--uart FILE]\n"
           "  hil reference --length M --seconds T [--force P] [--theta0 DEG]\n"
           "          [--trace CSV] [--h S]\n"
+          "  hil sense --hand N [--set NAME=VALUE]...   (the readings a steady push gives)\n"
           "  hil selftest\n"
           "  hil params            (the baseline model parameters)\n"
           "Force profiles: newtons at the hand from each time on (+ pushes the\n"
@@ -352,6 +351,10 @@ static int cmd_run(int argc, char** argv) {
     fprintf(stderr, "hil: --hand force needs --force t0:F0,...\n");
     return 2;
   }
+  // A hand that pushes from the start has already pressed the lever into
+  // the foam (no ringing of the light lever from a push out of nowhere).
+  if (hand == HAND_FORCE)
+    sim.dev.lever_deg = hil_static_delta(&params, hil_profile_at(&sim.dev.force, 0));
 
   elf_firmware_t fw;
   memset(&fw, 0, sizeof fw);
@@ -551,6 +554,36 @@ static int cmd_reference(int argc, char** argv) {
   return 0;
 }
 
+// ---- sense ------------------------------------------------------------------
+
+// The readings a steady hand force gives (the physical lever at rest where
+// the pads' torque balances the hand's).
+static int cmd_sense(int argc, char** argv) {
+  HilParams params;
+  hil_params_default(&params);
+  double hand = 0;
+  for (int i = 2; i < argc; ++i) {
+    const char* a = argv[i];
+    const char* v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (!v) usage();
+    ++i;
+    if (!strcmp(a, "--hand")) hand = atof(v);
+    else if (!strcmp(a, "--set")) {
+      if (!parse_set(&params, v)) usage();
+    } else {
+      usage();
+    }
+  }
+  const double delta = hil_static_delta(&params, hand);
+  double down = 0, up = 0;
+  hil_pad_forces(&params, delta, 0, &down, &up);
+  printf("result delta_deg=%.6f\n", delta);
+  printf("result down_N=%.6f\nresult up_N=%.6f\n", down, up);
+  printf("result adc_down=%d\nresult adc_up=%d\n",
+         (int)floor(hil_fsr_reading(down)), (int)floor(hil_fsr_reading(up)));
+  return 0;
+}
+
 // ---- selftest ---------------------------------------------------------------
 
 static int failures = 0;
@@ -699,6 +732,7 @@ int main(int argc, char** argv) {
   if (!strcmp(argv[1], "run")) return cmd_run(argc, argv);
   if (!strcmp(argv[1], "reference")) return cmd_reference(argc, argv);
   if (!strcmp(argv[1], "selftest")) return cmd_selftest();
+  if (!strcmp(argv[1], "sense")) return cmd_sense(argc, argv);
   if (!strcmp(argv[1], "params")) {
     HilParams p;
     hil_params_default(&p);

@@ -197,6 +197,18 @@ void hil_pad_forces(const HilParams* p, double delta_deg, double delta_rate,
   *up_N = up > 0 ? up : 0;
 }
 
+double hil_static_delta(const HilParams* p, double hand_N) {
+  const double target = hand_N * p->hand_radius_m / p->sensor_radius_m;
+  double lo = -2 * p->full_deg, hi = 2 * p->full_deg, down, up;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    hil_pad_forces(p, mid, 0, &down, &up);
+    if (down - up < target) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 // ---- Force profiles -------------------------------------------------------
 
 int hil_profile_parse(ForceProfile* fp, const char* text) {

@@ -82,6 +82,10 @@ double hil_function1_grams(double reading);
 void hil_pad_forces(const HilParams* p, double delta_deg, double delta_rate,
                     double* down_N, double* up_N);
 
+// The lever's turn against the mount (deg) at which the pads' torque
+// balances a steady hand force (N at the hand), by bisection.
+double hil_static_delta(const HilParams* p, double hand_N);
+
 // ---- The physical system ---------------------------------------------------
 enum { HAND_NONE, HAND_FORCE, HAND_RIGID, HAND_SPRING };
 
