@@ -675,6 +675,18 @@ static int cmd_selftest(void) {
     }
     check(monotone, "foam: net force rises with the angle over +-4 deg",
           "%.0f of %.0f steps", monotone ? 800.0 : 0.0, 800.0);
+    // A steady push: where the pads hold the lever, their torque is the
+    // hand's (in the foam's soft middle, at the loaded end, and at 15 N).
+    double worst = 0;
+    const double hands[] = {0.3, 1.1281, 2.354, 3.0};
+    for (int i = 0; i < 4; ++i) {
+      hil_pad_forces(&p, hil_static_delta(&p, hands[i]), 0, &d, &u);
+      const double err = fabs((d - u) * p.sensor_radius_m -
+                              hands[i] * p.hand_radius_m);
+      if (err > worst) worst = err;
+    }
+    check(worst < 1e-9, "foam: a steady push balanced (hil sense)",
+          "largest torque mismatch %.2g N m (tolerance %.0g)", worst, 1e-9);
   }
 
   // The physics reference against small-angle results.
