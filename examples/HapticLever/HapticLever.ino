@@ -77,12 +77,46 @@ const uint8_t kServoPin = 7;
 // `angle:<deg> force:<N> length:<m>` every 20 ms (Serial Plotter).
 const bool kPlotter = false;
 
-// ---- Calibration ---------------------------------------------------------
-// One FSR reading (0-1023) to newtons. This is the report's Function 1,
+// ---- Calibration ----------------------------------------------------------
+// One FSR reading (0-1023) to newtons; it runs outside the physics step,
+// once per reading. The default is the report's Function 1,
 // grams = x / (-1.30315751e-5 x^2 + 1.063940729e-2 x + 2.30339406), written
-// with u = x / 1024 so that every term fits Q16.16. To calibrate your own
-// sensors, replace the body of this function (it runs outside the physics
-// step, once per reading).
+// with u = x / 1024 so that every term fits Q16.16; it reads the push a few
+// percent off the measured points. To use your own sensors' measurements
+// instead (the reading an FSR gives under known loads, in grams on the
+// sensor, as the report measured on a scale), uncomment the define below
+// and put the readings and grams into kFsrTable, each reading larger than
+// the one before: a reading then becomes a force by straight lines between
+// the points (the last one extended past the top; no force at or below the
+// first). The table here is the report's Table D.1.
+// #define HAPTIC_FSR_TABLE
+#ifdef HAPTIC_FSR_TABLE
+struct FsrPoint {
+  uint16_t reading;
+  uint16_t grams;
+};
+const FsrPoint kFsrTable[] PROGMEM = {
+    {0, 50},    {415, 100}, {530, 150}, {640, 200},  {705, 250},  {755, 300},
+    {790, 350}, {824, 400}, {855, 450}, {870, 500},  {880, 550},  {895, 600},
+    {900, 700}, {906, 800}, {920, 900}, {940, 1100}, {950, 1500}};
+const uint8_t kFsrPoints = sizeof(kFsrTable) / sizeof(kFsrTable[0]);
+
+S fsrNewtons(int reading) {
+  // At or below the first point the FSR reads nothing: no force.
+  if (reading <= int(pgm_read_word(&kFsrTable[0].reading))) return S();
+  uint8_t i = 1;
+  while (i < kFsrPoints - 1 &&
+         reading > int(pgm_read_word(&kFsrTable[i].reading))) {
+    ++i;
+  }
+  const int r0 = pgm_read_word(&kFsrTable[i - 1].reading);
+  const int r1 = pgm_read_word(&kFsrTable[i].reading);
+  const int g0 = pgm_read_word(&kFsrTable[i - 1].grams);
+  const int g1 = pgm_read_word(&kFsrTable[i].grams);
+  const S grams = S(g0) + S(reading - r0) / S(r1 - r0) * S(g1 - g0);
+  return grams * S(0.00981);
+}
+#else
 const int kFsrLimit = 960;  // the fitted curve has a pole near 990
 S fsrNewtons(int reading) {
   if (reading <= 0) return S();
@@ -93,6 +127,7 @@ S fsrNewtons(int reading) {
       (S(-13.664495) * u + S(10.894753)) * u + S(2.30339406);
   return x / denominator * S(0.00981);
 }
+#endif
 
 // ---- The device ----------------------------------------------------------
 const S kSensorDistance(0.04);      // m, FSRs to pivot
