@@ -7,8 +7,8 @@
 // in 2D, no division and no square root while it turns slowly.
 //
 // Which solver a world links (World::rodAdded()): a world whose rods can
-// never share a particle takes this one alone, and the chains' solve (4 to
-// 5 KB on the Nano) is not linked. That is a world of one constraint slot,
+// never share a particle takes this one alone, and the chains' solve (the
+// larger part of Contacts/RodSolver.hpp) is not linked. That is a world of one constraint slot,
 // and a world whose rods all hang from anchors (addRod(particle, anchor,
 // length)), where a particle takes one rod: a second anchored rod on the
 // same particle is refused (WorldError::kBadArgument) while the world has
