@@ -11,8 +11,10 @@
 
 namespace tinyparticle {
 
+// 2 particles, gravity, the rod; no contact slot: rods take none, and a
+// world without one links no resolver.
 template <typename S, uint8_t Dim>
-using PendulumWorld = World<S, Dim, 2, 1, 1, 1>;
+using PendulumWorld = World<S, Dim, 2, 1, 1, 0>;
 
 struct PendulumScene {
   ParticleId pivot;
