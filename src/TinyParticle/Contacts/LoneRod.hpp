@@ -128,17 +128,15 @@ struct LoneRods {
 
   // The position solve of one rod: with one immovable end, the moving
   // end's change of speed along u. (Through the chains' rightSide() it
-  // cost 400 cycles more.)
+  // cost 400 cycles more.) With two movable ends, the same for their
+  // relative motion, shared between them (shareBoth()).
   template <bool kTwoMovable>
   static void shake(W& world, const Slot& s, Pass& pass) {
     const uint8_t moving = movingEnds<kTwoMovable>(world, s);
     if (moving == 0) return;
-    if (kTwoMovable && moving == 2) {
-      shakeBoth(world, s, pass);
-      return;
-    }
+    const bool both = kTwoMovable && moving == 2;
     bool fromB;
-    P& end = movingEnd(world, s, fromB);
+    P& end = movingEnd(world, s, fromB);  // a when both move
     V u = s.params.link.direction;
     V d = end.position;
     if (fromB) {
@@ -149,12 +147,22 @@ struct LoneRods {
                                      ? s.params.link.anchor
                                      : world.particleAt(s.b).position);
     }
+    const V* w = &end.velocity;
+    V relative;
+    if (both) {
+      relative = end.velocity - world.particleAt(s.b).velocity;
+      w = &relative;
+    }
     S error;
     bool turning;
-    end.velocity.addScaled(u, Rods::positionSpeed(d, end.velocity, u,
-                                                  s.params.link, pass, error,
-                                                  turning));
+    const S speed = Rods::positionSpeed(d, *w, u, s.params.link, pass, error,
+                                        turning);
     if (turning) pass.turned = true;
+    if (both) {
+      shareBoth(world, s, speed, error);
+      return;
+    }
+    end.velocity.addScaled(u, speed);
     if (!detail::isZero(error)) end.position.addScaled(u, error);
   }
 
@@ -203,17 +211,13 @@ struct LoneRods {
   static S shareOfA(const P& a, const P& b) {
     return a.inverseMass / (a.inverseMass + b.inverseMass);
   }
-  TINYPARTICLE_NOINLINE static void shakeBoth(W& world, const Slot& s,
-                                              Pass& pass) {
+  // The change `speed` of the relative speed along u, and the move
+  // `error` along it, shared between the two ends.
+  TINYPARTICLE_NOINLINE static void shareBoth(W& world, const Slot& s,
+                                              S speed, S error) {
     P& a = world.particleAt(s.a);
     P& b = world.particleAt(s.b);
     const V& u = s.params.link.direction;
-    S error;
-    bool turning;
-    const S speed =
-        Rods::positionSpeed(Rods::span(world, s), a.velocity - b.velocity, u,
-                            s.params.link, pass, error, turning);
-    if (turning) pass.turned = true;
     const S share = shareOfA(a, b);
     a.velocity.addScaled(u, speed * share);
     b.velocity.addScaled(u, -(speed - speed * share));
