@@ -28,6 +28,10 @@ struct LeverScene {
 };
 
 // The rod end has mass 0.1 kg and radius 0.01 m; length defaults to 0.15 m.
+// The rod hangs from an anchor at the pivot's place, so that the world's
+// rods are all anchored and it links only the lone rods' solve
+// (Contacts/LoneRod.hpp); the pivot particle marks the place (the renderer
+// draws it) and takes no part in the motion.
 template <class W>
 LeverScene buildLever(W& world, const typename W::Vec* userForce,
                       typename W::Scalar length = typename W::Scalar(0.15)) {
@@ -38,7 +42,7 @@ LeverScene buildLever(W& world, const typename W::Vec* userForce,
   V end;
   end.x = length;
   scene.end = world.addParticle(end, S(0.1), S(0.01));
-  scene.rod = world.addRod(scene.end, scene.pivot, length);
+  scene.rod = world.addRod(scene.end, V(), length);
   scene.gravity = world.addGravity();  // the pivot is fixed: only the end falls
   scene.user = world.addCustomForce(scene.end, userForce);
   return scene;
