@@ -19,7 +19,7 @@
 // Two savings over the chains' solve make the lever's step about 40 %
 // cheaper (measured):
 // - no rows, passes or divisions (a rod with two movable ends divides
-//   once per solve for its ends' shares);
+//   once in each of the two solves, for its ends' shares);
 // - the direction kept between steps is d / L, not normalised: the Newton
 //   step costs four multiplies, and d / L serves as well. With |u| = 1 + e
 //   (e a few units of rounding), the velocity solve leaves 2e of a speed
