@@ -55,7 +55,8 @@ void loop() {
     if (renderer.drawLine(world, Serial)) {
       drawing = false;
       Serial.print(F("t="));
-      Serial.print(timing.steps() / 128.0, 2);
+      // steps / 128 s, printed in fixed point (no float routine linked).
+      print(Serial, Q16_16::fromRaw(int32_t(timing.steps() << 9)), 2);
       Serial.print(F(" s  contacts "));
       Serial.print(world.stats().contacts);
       Serial.print(F("  iterations "));

@@ -22,42 +22,49 @@
 
 // Scenes/Cradle.hpp: 5 balls (r = 5 cm) on 0.5 m rods from posts 0.1 m
 // apart at y = 0.8 m, gravity, collisions with restitution 1.
-typedef CradleWorld<Q16_16> World2;
+typedef Q16_16 S;
+typedef CradleWorld<S> World2;
 World2 world;
 
 // 36 x 14 characters over x from -0.2 to 1.2 m and y from 0.2 to 0.9 m.
-AsciiRenderer<World2, 36, 14> renderer(Q16_16(-0.2), Q16_16(0.2),
-                                       Q16_16(0.04), Q16_16(0.05));
+AsciiRenderer<World2, 36, 14> renderer(S(-0.2), S(0.2), S(0.04), S(0.05));
 RealTimeLoop timing(256, 4);  // 256 steps per second, 4 frames per second
 
-const Q16_16 kDt(1.0 / 256);
+const S kDt(1.0 / 256);
 const uint32_t kRunSteps = 6 * 256UL;  // 6 s of simulated time
-const float kRest = 0.8f - 0.5f;       // the balls' height at rest (m)
-float middleMove = 0;                   // largest move of balls 2 to 4 (m)
-bool rising[5];                         // moving up in the last step
+const S kRest(0.8 - 0.5);              // the balls' height at rest (m)
+S middleMove;                          // largest move of balls 2 to 4 (m)
+bool rising[5];                        // moving up in the last step
 bool drawing = false;
+
+// A length in m printed in mm, with `decimals` decimals. (Fixed-point
+// arithmetic and printing only: the sketch links no float routine.)
+void printMillimetres(S metres, uint8_t decimals) {
+  print(Serial, metres * S(1000), decimals);
+}
 
 // An end ball whose upward motion has just stopped, well above rest: the
 // top of its swing.
 void track() {
   for (uint8_t k = 0; k < 5; ++k) {
     const World2::ParticleType& p = world.particleAt(k);
-    const float h = p.position.y.toFloat() - kRest;
+    const S h = p.position.y - kRest;
     if (k >= 1 && k <= 3) {
-      const float dx = p.position.x.toFloat() - (0.3f + 0.1f * k);
-      const float d = sqrt(dx * dx + h * h);
+      const Vec2<S> offset(p.position.x - (S(0.3) + S(0.1) * S(int(k))), h);
+      const S d = offset.magnitude();
       if (d > middleMove) middleMove = d;
       continue;
     }
-    const bool up = p.velocity.y > Q16_16(0);
-    if (rising[k] && !up && h > 0.02f) {
+    const bool up = p.velocity.y > S(0);
+    if (rising[k] && !up && h > S(0.02)) {
       Serial.print(F("t="));
-      Serial.print(timing.steps() / 256.0, 2);
+      // steps / 256 s: the raw steps as the integer part's fraction bits.
+      print(Serial, S::fromRaw(int32_t(timing.steps() << 8)), 2);
       Serial.print(k == 0 ? F(" s  first") : F(" s  last"));
       Serial.print(F(" ball at the top: "));
-      Serial.print(h * 1000, 0);
+      printMillimetres(h, 0);
       Serial.print(F(" mm; middle balls moved at most "));
-      Serial.print(middleMove * 1000, 1);
+      printMillimetres(middleMove, 1);
       Serial.println(F(" mm"));
     }
     rising[k] = up;
@@ -70,7 +77,7 @@ void setup() {
   Serial.println(F("NewtonsCradle: 5 balls, Q16.16, dt = 1/256 s"));
   buildCradle(world);
   Serial.print(F("first ball raised "));
-  Serial.print((world.particleAt(0).position.y.toFloat() - kRest) * 1000, 0);
+  printMillimetres(world.particleAt(0).position.y - kRest, 0);
   Serial.println(F(" mm"));
 }
 

@@ -17,7 +17,7 @@
 #include <avr/sleep.h>
 
 typedef Q16_16 S;               // the scalar: Q16_16, Q24_8 or Float
-World<S, 2, 2, 1, 1, 1> world;  // 2D; 2 particles, 1 force, 1 rod, 1 contact
+World<S, 2, 2, 1, 1, 0> world;  // 2D; 2 particles, 1 force, 1 rod, no contacts
 ParticleId bob;
 
 void setupPendulum() {
@@ -28,7 +28,7 @@ void setupPendulum() {
   world.addGravity();  // the world's gravity: the pivot is fixed, the bob falls
 }
 
-AsciiRenderer<World<S, 2, 2, 1, 1, 1>, 41, 12> renderer(S(-1.025), S(-1.1),
+AsciiRenderer<World<S, 2, 2, 1, 1, 0>, 41, 12> renderer(S(-1.025), S(-1.1),
                                                         S(0.05), S(0.1));
 
 void setup() {

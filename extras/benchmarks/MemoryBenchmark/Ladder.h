@@ -10,8 +10,8 @@
 //   6  + buoyancy
 //   7  + a stiff spring
 //   8  + a custom force
-//   9  + a rod (and a contact pool of 8)
-//  10  + a cable
+//   9  + a rod (rods take no contacts)
+//  10  + a cable (and a contact pool of 8)
 //  11  + planes: the walls of a box (2 x DIM planes)
 //  12  + particle-particle collisions
 //
@@ -50,7 +50,7 @@ const uint8_t kConstraints = FEATURE >= 12   ? 3 + 2 * DIM
                              : FEATURE >= 10 ? 2
                              : FEATURE >= 9  ? 1
                                              : 0;
-const uint8_t kContacts = FEATURE >= 9 ? 8 : 0;
+const uint8_t kContacts = FEATURE >= 10 ? 8 : 0;
 
 typedef World<S, DIM, kParticles, kForces, kConstraints, kContacts> LadderWorld;
 typedef LadderWorld::Vec V;

@@ -58,8 +58,9 @@ struct Resolver {
     // Below these a contact counts as resolved (see worstOf()).
     const S closing = -W::speedMargin();
     const S deep = W::contactMargin();
-    if (count == 1) {
-      // A lever or a pendulum: once resolved, the contact is done.
+    // One contact (a ball on the floor): once resolved, it is done. A world
+    // of one contact slot links nothing else.
+    if (count == 1 || W::kContactCapacity <= 1) {
       if (cap == 0 || !isActive(contacts[0], closing, deep)) return 0;
       Change change;
       resolveOne(world, contacts[0], byDt, change);

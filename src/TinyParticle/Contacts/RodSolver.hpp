@@ -51,9 +51,10 @@
 //
 // Lone rods: where every rod is alone with one end immovable (a pendulum,
 // a lever, separate pendulums), there is nothing to eliminate and each
-// rod is solved on its own in one pass (solveLone()), with about 24
-// multiplies per step in 2D, no division and no square root while it
-// turns slowly.
+// rod is solved on its own in one pass (Contacts/LoneRod.hpp), with about
+// 24 multiplies per step in 2D, no division and no square root while it
+// turns slowly. A world whose rods can never share a particle links that
+// solve alone, without this file's chains.
 //
 // Cost per rod of a chain and step, Q16.16 on AVR: about 30 multiplies and
 // two divisions (one per solve: the further passes of a solve reuse its
@@ -69,6 +70,9 @@
 #include "../World/Handle.hpp"
 
 namespace tinyparticle {
+
+template <class W>
+struct LoneRods;
 
 template <class W>
 struct RodSolver {
@@ -102,8 +106,8 @@ struct RodSolver {
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (world.rodState() & W::kRodsChanged) findChains(world);
     const S invDt = world.inverseDt(dt);
-    if ((world.rodState() & W::kRodsLone) && allLone(world)) {
-      solveLone(world, byDt, invDt);
+    if ((world.rodState() & W::kRodsLone) && LoneRods<W>::allLone(world)) {
+      LoneRods<W>::template solveAll<false>(world, byDt, invDt);
       return;
     }
     const bool coupled = (world.rodState() & W::kRodsCoupled) != 0;
@@ -156,6 +160,8 @@ struct RodSolver {
   }
 
  private:
+  friend struct LoneRods<W>;  // shares the step equations and Pass
+
   struct Row {
     S multiplier;    // the elimination's factor for this row
     S inversePivot;  // 1 / the row's pivot, after the elimination
@@ -313,8 +319,8 @@ struct RodSolver {
   // A rod's direction from its span d. Near its length, d / L is nearly a
   // unit vector: with `unit`, one Newton step (1.5 - |d / L|^2 / 2) makes
   // it one to about 1e-7; without, d / L itself (lone rods, see
-  // solveLone()). Far off its length (just added, or moved by the sketch)
-  // d is normalised in full.
+  // Contacts/LoneRod.hpp). Far off its length (just added, or moved by the
+  // sketch) d is normalised in full.
   static void setDirection(const Vec<S, 2>& d,
                            typename W::LinkParamsType& link, bool unit) {
     const S invL = link.inverseLength;
@@ -330,7 +336,7 @@ struct RodSolver {
     } else {
       // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
       // 1.5 pass only lengths between 0.7 and 1.12, from which the lone
-      // rods' half-error moves converge (see solveLone()).
+      // rods' half-error moves converge (see Contacts/LoneRod.hpp).
       const S ax = fabs(x), ay = fabs(y);
       const S sum = ax + ay;
       if (ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
@@ -356,105 +362,6 @@ struct RodSolver {
   static void normalizeInto(V d, typename W::LinkParamsType& link) {
     if (d.normalize()) link.direction = d;
     // else the ends coincide: keep the old direction
-  }
-
-  // ---- Lone rods ----------------------------------------------------------
-  //
-  // A world whose rods are all alone, each with one end immovable (a
-  // pendulum, a lever, separate pendulums), needs no elimination: a rod's
-  // impulse is the moving end's change of speed, positionSpeed() itself,
-  // exact at any turn in one pass. Two savings make the lever's step about
-  // 40 % cheaper than through the chains' solve (measured):
-  // - no rows, passes or divisions;
-  // - the direction kept between steps is d / L, not normalised: the
-  //   Newton step costs four multiplies, and d / L serves as well. With
-  //   |u| = 1 + e (e a few units of rounding), the velocity solve leaves
-  //   2e of a speed that is nearly zero anyway, and the next position
-  //   solve sees a = d.u = |d|^2 / L while the end has not moved since: its
-  //   length error L - |d| is (L^2 - |d|^2) / 2L = (L - a) / 2, which is
-  //   what it mends. (An end moved along the rod by a contact is mended
-  //   by half each step.) Short rods in Q16.16 keep their energy better
-  //   this way: the 5 cm pendulum's error at dt = 1/256 s fell from 1.8 %
-  //   to 0.6 % of its swing. A step in which a rod turned by more than
-  //   1/16 rad ends with unit directions: at such turns the closed form's
-  //   terms are large, and |u| = 1 + e would put the end e of them off
-  //   (a lever flung at 30 m/s by a move of the sketch kept swinging 3 %
-  //   off its length). Their error, halved all the same, is mended by
-  //   half a step: it converges.
-
-  // Every rod alone, with exactly one immovable end (an anchor, or a
-  // particle of no inverse mass at the start of this step).
-  static bool allLone(W& world) {
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (!isRodAt(world, i)) continue;
-      const Slot& s = world.constraintAt(i);
-      if (isImmovable(world, s.a) == isImmovable(world, s.b)) return false;
-    }
-    return true;
-  }
-  static bool isImmovable(W& world, uint8_t p) {
-    return p >= W::kParticleCapacity || world.particleAt(p).isStatic();
-  }
-
-  static void solveLone(W& world, const Scaler<S>& byDt, S invDt) {
-    Pass pass(byDt, invDt);
-    pass.unit = false;
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (isRodAt(world, i)) shakeLone(world, world.constraintAt(i), pass);
-    }
-    // After a fast turn, unit directions (see above).
-    const bool unit = pass.turned;
-    world.movePositions(byDt);
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (!isRodAt(world, i)) continue;
-      Slot& s = world.constraintAt(i);
-      bool fromB;
-      P& end = loneEnd(world, s, fromB);
-      setDirection(span(world, s), s.params.link, unit);
-      removeRadial(end.velocity, s.params.link.direction);
-    }
-  }
-
-  // The moving end of a lone rod; fromB when that is b (the rod's
-  // direction then points away from it).
-  static P& loneEnd(W& world, const Slot& s, bool& fromB) {
-    P& a = world.particleAt(s.a);
-    fromB = a.isStatic();
-    return fromB ? world.particleAt(s.b) : a;
-  }
-  // The position solve of a lone rod: the moving end's change of speed
-  // along u. (Through rightSide() it cost 400 cycles more.)
-  static void shakeLone(W& world, const Slot& s, Pass& pass) {
-    bool fromB;
-    P& end = loneEnd(world, s, fromB);
-    V u = s.params.link.direction;
-    V d = end.position;
-    if (fromB) {
-      u = -u;
-      detail::subtractNonZero(d, world.particleAt(s.a).position);
-    } else {
-      detail::subtractNonZero(d, s.b == kAnchorIndex
-                                     ? s.params.link.anchor
-                                     : world.particleAt(s.b).position);
-    }
-    S error;
-    bool turning;
-    end.velocity.addScaled(u, positionSpeed(d, end.velocity, u,
-                                            s.params.link, pass, error,
-                                            turning));
-    if (turning) pass.turned = true;
-    if (!detail::isZero(error)) end.position.addScaled(u, error);
-  }
-
-  // RATTLE for a lone rod: the moving end keeps no speed along the rod.
-  static void removeRadial(Vec<S, 2>& v, const Vec<S, 2>& u) {
-    const S ux = u.x, uy = u.y;
-    const S radial = v.x * ux + v.y * uy;
-    v.x -= ux * radial;
-    v.y -= uy * radial;
-  }
-  static void removeRadial(Vec<S, 3>& v, const Vec<S, 3>& u) {
-    v.addScaled(u, -dot(v, u));
   }
 
   // The right side of rod s's row: for the velocity solve, minus the

@@ -95,8 +95,8 @@ class AsciiRenderer {
   void renderRow(const W& world, uint8_t row, char* text) const {
     for (uint8_t c = 0; c < kColumns; ++c) text[c] = ' ';
     // The row's band in sub-cell units, y growing upwards.
-    const int32_t low = int32_t(kRows - 1 - row) * kSub;
-    const int32_t high = low + kSub;
+    const Units low = Units((kRows - 1 - row) * kSub);
+    const Units high = Units(low + kSub);
 
     for (uint8_t i = 0; i < W::kForceCapacity; ++i) {
       const typename W::ForceSlot& f = world.forceAt(i);
@@ -117,23 +117,27 @@ class AsciiRenderer {
   }
 
  private:
-  static const int32_t kSub = 16;       // sub-cell units per cell
-  static const int32_t kLimit = 16000;  // clamp, keeps products in int32
+  // Positions in sub-cell units, clamped to +-kLimit: 16 bits hold them
+  // and the sum or difference of two (8-bit code works on half the bytes),
+  // 32 bits their products.
+  typedef int16_t Units;
+  static const Units kSub = 16;       // sub-cell units per cell
+  static const Units kLimit = 16000;
 
-  static int32_t clampUnits(int32_t v) {
-    return v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v);
+  static Units clampUnits(int32_t v) {
+    return Units(v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v));
   }
-  int32_t toUnitsX(S x) const {
+  Units toUnitsX(S x) const {
     return clampUnits(((x - mLeft) * mScaleX).toInt());
   }
-  int32_t toUnitsY(S y) const {
+  Units toUnitsY(S y) const {
     return clampUnits(((y - mBottom) * mScaleY).toInt());
   }
 
-  static void mark(char* text, int32_t fromCell, int32_t toCell, char c) {
+  static void mark(char* text, Units fromCell, Units toCell, char c) {
     if (fromCell < 0) fromCell = 0;
-    if (toCell > int32_t(kColumns) - 1) toCell = int32_t(kColumns) - 1;
-    for (int32_t k = fromCell; k <= toCell; ++k) {
+    if (toCell > Units(kColumns) - 1) toCell = Units(kColumns - 1);
+    for (Units k = fromCell; k <= toCell; ++k) {
       // A particle hides a link; a link never hides a particle.
       if (c == '.' && text[k] != ' ') continue;
       text[k] = c;
@@ -141,8 +145,9 @@ class AsciiRenderer {
   }
 
   // floor(v / kSub) for negative v too, without shifting a negative value.
-  static int32_t cellOf(int32_t v) {
-    return v >= 0 ? v / kSub : -((-v + kSub - 1) / kSub);
+  static Units cellOf(Units v) {
+    return v >= 0 ? Units(uint16_t(v) / kSub)
+                  : Units(-Units((uint16_t(-v) + kSub - 1) / kSub));
   }
 
   // round(sqrt(n)) is not needed: floor is enough for a character grid.
@@ -164,54 +169,56 @@ class AsciiRenderer {
     return int32_t(root);
   }
 
-  void drawParticle(const typename W::ParticleType& p, int32_t low,
+  void drawParticle(const typename W::ParticleType& p, Units low,
                     char* text) const {
-    const int32_t x = toUnitsX(p.position.x);
-    const int32_t y = toUnitsY(p.position.y);
-    const int32_t rx = clampUnits((p.radius * mScaleX).toInt());
-    const int32_t ry = clampUnits((p.radius * mScaleY).toInt());
+    const Units x = toUnitsX(p.position.x);
+    const Units y = toUnitsY(p.position.y);
+    const Units rx = clampUnits((p.radius * mScaleX).toInt());
+    const Units ry = clampUnits((p.radius * mScaleY).toInt());
     const char c = p.isStatic() ? '+' : (rx < kSub / 2 ? 'o' : 'O');
-    const int32_t centre = low + kSub / 2;  // of the row's cells
-    const int32_t dy = centre - y;
+    const Units centre = Units(low + kSub / 2);  // of the row's cells
+    const Units dy = Units(centre - y);
     bool drawn = false;
     if (ry > 0 && dy <= ry && dy >= -ry) {
       // Half-width of the ellipse at this height, in sub-cell units.
-      const int32_t hx = rx * floorSqrt(ry * ry - dy * dy) / ry;
+      const Units hx = Units(
+          rx * floorSqrt(int32_t(ry) * ry - int32_t(dy) * dy) / ry);
       // Cells whose centre c * kSub + kSub / 2 lies in [x - hx, x + hx].
-      const int32_t from = -cellOf(-(x - hx - kSub / 2));  // ceiling
-      const int32_t to = cellOf(x + hx - kSub / 2);
+      const Units from = Units(-cellOf(Units(-(x - hx - kSub / 2))));
+      const Units to = cellOf(Units(x + hx - kSub / 2));
       if (from <= to) {
         mark(text, from, to, c);
         drawn = true;
       }
     }
     if (!drawn && y >= low && y < low + kSub) {
-      const int32_t cell = cellOf(x);
+      const Units cell = cellOf(x);
       mark(text, cell, cell, c);
     }
   }
 
   void drawLink(const W& world, uint8_t a, uint8_t b, const V& anchor,
-                int32_t low, int32_t high, char* text) const {
+                Units low, Units high, char* text) const {
     const V& pa = world.particleAt(a).position;
     const V& pb = b == kAnchorIndex ? anchor : world.particleAt(b).position;
-    int32_t x0 = toUnitsX(pa.x), y0 = toUnitsY(pa.y);
-    int32_t x1 = toUnitsX(pb.x), y1 = toUnitsY(pb.y);
+    Units x0 = toUnitsX(pa.x), y0 = toUnitsY(pa.y);
+    Units x1 = toUnitsX(pb.x), y1 = toUnitsY(pb.y);
     if (y0 > y1) {  // y0 <= y1 from here on
-      int32_t t = x0; x0 = x1; x1 = t;
+      Units t = x0; x0 = x1; x1 = t;
       t = y0; y0 = y1; y1 = t;
     }
     if (y1 < low || y0 >= high) return;
-    int32_t xa = x0, xb = x1;
+    Units xa = x0, xb = x1;
     if (y1 != y0) {
       // x where the segment enters and leaves the band.
-      const int32_t ya = y0 > low ? y0 : low;
-      const int32_t yb = y1 < high - 1 ? y1 : high - 1;
-      xa = x0 + (ya - y0) * (x1 - x0) / (y1 - y0);
-      xb = x0 + (yb - y0) * (x1 - x0) / (y1 - y0);
+      const Units ya = y0 > low ? y0 : low;
+      const Units yb = y1 < high - 1 ? y1 : Units(high - 1);
+      const int32_t across = x1 - x0, up = y1 - y0;
+      xa = Units(x0 + (ya - y0) * across / up);
+      xb = Units(x0 + (yb - y0) * across / up);
     }
     if (xa > xb) {
-      const int32_t t = xa; xa = xb; xb = t;
+      const Units t = xa; xa = xb; xb = t;
     }
     mark(text, cellOf(xa), cellOf(xb), '.');
   }

@@ -11,8 +11,10 @@
 
 namespace tinyparticle {
 
+// 2 particles, gravity, the rod; no contact slot: rods take none, and a
+// world without one links no resolver.
 template <typename S, uint8_t Dim>
-using PendulumWorld = World<S, Dim, 2, 1, 1, 1>;
+using PendulumWorld = World<S, Dim, 2, 1, 1, 0>;
 
 struct PendulumScene {
   ParticleId pivot;
@@ -32,7 +34,9 @@ PendulumScene buildPendulum(W& world, typename W::Scalar length,
   bob.x = length * sin(theta0);
   bob.y = -(length * cos(theta0));
   scene.bob = world.addParticle(bob, mass);
-  scene.rod = world.addRod(scene.bob, scene.pivot, length);
+  // Hung from an anchor at the pivot's place, as the lever
+  // (Scenes/Lever.hpp): the world links only the lone rods' solve.
+  scene.rod = world.addRod(scene.bob, V(), length);
   scene.gravity = world.addGravity();  // the pivot is fixed: only the bob falls
   return scene;
 }

@@ -38,6 +38,7 @@
 #include "../Contacts/Collisions.hpp"
 #include "../Contacts/Contact.hpp"
 #include "../Contacts/Link.hpp"
+#include "../Contacts/LoneRod.hpp"
 #include "../Contacts/Plane.hpp"
 #include "../Contacts/Resolver.hpp"
 #include "../Contacts/RodSolver.hpp"
@@ -366,8 +367,8 @@ class World
     return rodAdded(addLink(a, b, length, S(), &RodSolver<World>::generate));
   }
   ConstraintId addRod(ParticleId a, const Vec& anchor, S length) {
-    return rodAdded(addAnchoredLink(a, anchor, length, S(),
-                                    &RodSolver<World>::generate));
+    return anchoredRodAdded(addAnchoredLink(a, anchor, length, S(),
+                                            &RodSolver<World>::generate));
   }
   // A cable: at most `length` (m) apart; it bounces with `restitution`.
   ConstraintId addCable(ParticleId a, ParticleId b, S length, S restitution) {
@@ -501,6 +502,10 @@ class World
         solveRods(*this, byDt, dt);
         TINYPARTICLE_PROFILE_END(kProfileRods);
       }
+    }
+    // Without contact slots the only constraints are rods (cables, planes
+    // and collisions need contacts): no contacts to make, no resolver.
+    if (kConstraints != 0 && kContacts != 0) {
       TINYPARTICLE_PROFILE_BEGIN(kProfileContacts);
       SleepStore::setInContacts(true);
       generateContacts();
@@ -520,8 +525,8 @@ class World
           Resolver<World>::resolve(*this, byDt, uint8_t(cap));
       SleepStore::setInContacts(false);
       TINYPARTICLE_PROFILE_END(kProfileResolve);
-      checkFiniteAfterContacts();
     }
+    if (kConstraints != 0) checkFiniteAfterContacts();
     for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
     StepScalerStore::setStepScaler(nullptr);  // byDt ends with the step
     TINYPARTICLE_PROFILE_END(kProfileStep);
@@ -1061,19 +1066,45 @@ class World
     return id;
   }
 
-  // A rod just added (or an invalid id): its length's inverse and its
-  // first direction, and the solver's turn on.
+  // A rod between two particles just added (or an invalid id): its
+  // length's inverse and its first direction, and the solver's turn on.
+  // Rods between particles may form chains: the chains' solve, unless the
+  // world has one constraint slot (one rod: lone, Contacts/LoneRod.hpp).
   ConstraintId rodAdded(ConstraintId id) {
-    ConstraintSlot* c = constraint(id);
-    if (c == nullptr) return id;
-    if (!RodSolver<World>::start(*this, *c)) {
-      freeSlot(*c);
+    if (!startRod(id)) return ConstraintId();
+    RodStore::setRodSolver(kConstraints == 1
+                               ? &LoneRods<World>::template solve<true>
+                               : &RodSolver<World>::solve);
+    return id;
+  }
+  // The same for a rod from a particle to an anchor. A world whose rods all
+  // hang from anchors solves them as lone rods, without linking the chains'
+  // solve; there a particle takes one rod (another one on it is refused
+  // with kBadArgument), until a rod between two particles brings the
+  // chains' solve, which solves any rods.
+  ConstraintId anchoredRodAdded(ConstraintId id) {
+    if (!startRod(id)) return ConstraintId();
+    const RodSolve lone = &LoneRods<World>::template solve<false>;
+    const RodSolve current = RodStore::rodSolver();
+    if (current == nullptr) {
+      RodStore::setRodSolver(lone);
+    } else if (current == lone && !LoneRods<World>::isAlone(*this, id.index)) {
+      freeSlot(constraintAt(id.index));
       mError |= WorldError::kBadArgument;
       return ConstraintId();
     }
-    RodStore::addRodBits(kRodsChanged);
-    RodStore::setRodSolver(&RodSolver<World>::solve);
     return id;
+  }
+  bool startRod(ConstraintId id) {
+    ConstraintSlot* c = constraint(id);
+    if (c == nullptr) return false;
+    if (!RodSolver<World>::start(*this, *c)) {
+      freeSlot(*c);
+      mError |= WorldError::kBadArgument;
+      return false;
+    }
+    RodStore::addRodBits(kRodsChanged);
+    return true;
   }
 
   ConstraintId addLink(ParticleId a, ParticleId b, S length, S restitution,
