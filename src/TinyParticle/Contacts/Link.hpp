@@ -36,14 +36,16 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
-#include "../World/Handle.hpp"
-#include "../World/Margins.hpp"
+#include "../Core/Generator.hpp"
+#include "../Math/ScalarTraits.hpp"
 #include "Resolver.hpp"
 
 namespace tinyparticle {
 
+// The parameters of rods and cables (a kind of World/Slots.hpp).
 template <typename S, uint8_t Dim>
 struct LinkParams {
+  static const uint8_t kShape = SlotShape::kAnchorable;
   Vec<S, Dim> anchor;  // anchored links only (b == kAnchorIndex)
   S length;            // rod length, or the cable's maximum length, m
   // Rods only (Contacts/RodSolver.hpp):
@@ -59,14 +61,17 @@ struct CableConstraint {
   typedef typename W::Vec V;
   typedef typename W::ParticleType P;
 
+  typedef LinkParams<S, W::kDimensions> Link;
+
   static void generate(W& world, typename W::ConstraintSlot& slot,
                        uint8_t source) {
+    const Link& link = InSlot::of<Link>(slot);
     P& a = world.particleAt(slot.a);
     P* b = nullptr;
     V delta = a.position;
     if (kAnchored) {
       if (a.isStatic()) return;
-      detail::subtractNonZero(delta, slot.params.link.anchor);
+      detail::subtractNonZero(delta, link.anchor);
     } else {
       b = &world.particleAt(slot.b);
       if (a.isStatic() && b->isStatic()) return;
@@ -75,7 +80,7 @@ struct CableConstraint {
     S lengthSquared = delta.magnitudeSquared();
     if (detail::isZero(lengthSquared)) return;  // ends together: no direction
     S length = sqrt(lengthSquared);
-    const S target = slot.params.link.length;
+    const S target = link.length;
     if (length < target) return;  // slack
     // The normal pushes a: away from b while too close, towards b while
     // too far (or exactly right: then the contact only removes the closing

@@ -5,25 +5,28 @@
 
 #include <stdint.h>
 
+#include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
 
 namespace tinyparticle {
 
+// A generator class (Core/Generator.hpp), run for one particle.
 template <typename S, uint8_t Dim>
-struct CustomForceParams {
-  const Vec<S, Dim>* force;  // N; must outlive the generator
-};
-
-template <class W>
 struct CustomForce {
-  typedef typename W::Scalar S;
+  static const uint8_t kShape = SlotShape::kNone;
+  const Vec<S, Dim>* force;  // N; must outlive the generator
 
-  static void apply(W& world, typename W::ForceSlot& slot, S) {
-    const typename W::Vec& force = *slot.params.custom.force;
-    if (detail::isZeroVector(force)) return;
-    typename W::ParticleType& p = world.particleAt(slot.a);
-    p.acceleration.addScaled(force, p.inverseMass);
+  static CustomForce make(const Vec<S, Dim>* force) {
+    CustomForce custom;
+    custom.force = force;
+    return custom;
+  }
+
+  void apply(Particle<S, Dim>& p, S) const {
+    if (detail::isZeroVector(*force)) return;
+    p.acceleration.addScaled(*force, p.inverseMass);
   }
 };
 
