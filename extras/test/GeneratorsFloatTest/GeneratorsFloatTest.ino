@@ -5,14 +5,14 @@
 // does the same float operations in the same order on the same operands as
 // the built-in one (Forces/Drag.hpp, Contacts/Plane.hpp), through the same
 // runners (Core/Generator.hpp); a difference in the last bit anywhere in
-// 2 s of motion fails the test.
+// 2 s of motion fails the test. Also the kind tags.
 #include <AUnit.h>
 #include <TinyParticle.h>
 
 using aunit::TestRunner;
 
 typedef Float S;
-typedef World<S, 2, 3, 2, 1, 4> W;  // one world type for every test
+typedef World<S, 2, 3, 2, 2, 4> W;  // one world type for every test
 typedef W::Vec V;
 
 // Drag k1 |v| + k2 |v|^2 against the velocity, as Forces/Drag.hpp.
@@ -110,6 +110,32 @@ test(UserConstraintForOneSameAsBuiltInPlane) {
   bool touched = false;
   assertEqual(planeForOne(touched), (uint16_t) 0);
   assertTrue(touched);
+}
+
+typedef DragForce<S, 2> Drag;
+typedef SpringForce<S, 2> PairSpring;
+typedef AnchoredSpringForce<S, 2> AnchoredSpring;
+
+test(KindTags) {
+  W w;
+  ParticleId p = w.addParticle(W::Vec(0.0, 1.0), S(1));
+  ParticleId q = w.addParticle(W::Vec(0.0, 2.0), S(1));
+  ForceId drag = w.addDrag(S(0.1), S(0));
+  ForceId spring = w.addSpring(p, W::Vec(), S(5), S(1));
+  // (2 force slots, 2 constraint slots)
+  assertTrue(w.forceParams<Drag>(drag) != nullptr);
+  assertTrue(w.forceParams<PairSpring>(drag) == nullptr);
+  assertTrue(w.forceParams<PairSpring>(spring) == nullptr);
+  AnchoredSpring* s = w.forceParams<AnchoredSpring>(spring);
+  assertTrue(s != nullptr);
+  assertTrue(s->stiffness == S(5));
+  ConstraintId floor = w.addPlane(W::Vec(0.0, 1.0), S(0), S(0));
+  ConstraintId rod = w.addRod(p, q, S(1));
+  assertFalse(w.setLength(floor, S(2)));
+  assertTrue(w.setLength(rod, S(0.5)));
+  assertTrue(w.constraintParams<W::LinkParamsType>(rod)->length == S(0.5));
+  assertTrue(w.removeForce(drag));
+  assertTrue(w.forceParams<Drag>(drag) == nullptr);
 }
 
 void setup() {

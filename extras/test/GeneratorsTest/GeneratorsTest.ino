@@ -7,8 +7,8 @@
 // Contacts/Plane.hpp), and the world runs both through the same runner
 // (Core/Generator.hpp), so fixed point and float alike round the same way.
 // A difference of one unit anywhere in 2 s of motion fails the test.
-// Also: the kind tags (typed parameters, setLength() only for links) and a
-// generator's fields changed by the sketch between steps.
+// Also: a generator's fields changed by the sketch between steps, and the
+// errors of the calls that add one.
 #include <AUnit.h>
 #include <TinyParticle.h>
 
@@ -219,33 +219,6 @@ test(UserGeneratorErrors) {
 // parameters are found only in a slot of that class, setLength() takes
 // only rods and cables (an anchored plane is not one), and removing a
 // generator frees its kind.
-typedef DragForce<Q16_16, 2> Drag;
-typedef SpringForce<Q16_16, 2> PairSpring;
-typedef AnchoredSpringForce<Q16_16, 2> AnchoredSpring;
-
-test(KindTags) {
-  W w;
-  ParticleId p = w.addParticle(W::Vec(0.0, 1.0), Q16_16(1));
-  ParticleId q = w.addParticle(W::Vec(0.0, 2.0), Q16_16(1));
-  ForceId drag = w.addDrag(Q16_16(0.1), Q16_16(0));
-  ForceId spring = w.addSpring(p, W::Vec(), Q16_16(5), Q16_16(1));
-  // (2 force slots, 2 constraint slots)
-  assertTrue(w.forceParams<Drag>(drag) != nullptr);
-  assertTrue(w.forceParams<PairSpring>(drag) == nullptr);
-  assertTrue(w.forceParams<PairSpring>(spring) == nullptr);
-  AnchoredSpring* s = w.forceParams<AnchoredSpring>(spring);
-  assertTrue(s != nullptr);
-  assertEqual(s->stiffness.raw(), Q16_16(5).raw());
-  ConstraintId floor = w.addPlane(W::Vec(0.0, 1.0), Q16_16(0), Q16_16(0));
-  ConstraintId rod = w.addRod(p, q, Q16_16(1));
-  assertFalse(w.setLength(floor, Q16_16(2)));
-  assertTrue(w.setLength(rod, Q16_16(0.5)));
-  assertEqual(w.constraintParams<W::LinkParamsType>(rod)->length.raw(),
-              Q16_16(0.5).raw());
-  assertTrue(w.removeForce(drag));
-  assertTrue(w.forceParams<Drag>(drag) == nullptr);
-}
-
 void setup() {
 #if !defined(EPOXY_DUINO)
   delay(1000);
