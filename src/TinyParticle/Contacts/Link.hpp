@@ -22,7 +22,7 @@
 // link (no tangential speed) gains nothing. The square root is expanded:
 // the dropped terms are O(dt^4) per step. In fixed point, a factor k - 1
 // below eight units of the format is not applied
-// (Margins::smallestFactor()): rounded, it would be off by half of itself
+// (ScalarTraits::smallestFactor()): rounded, it would be off by half of itself
 // every step in the same direction, and add energy; there the cable keeps
 // the plain, slightly lossy behaviour.
 //
@@ -112,8 +112,8 @@ struct CableConstraint {
     }
     const S q = world.stepScaler()(inverse);  // dt / L
     const S h = q * (-separating - detail::half(v->magnitudeSquared() * q));
-    if (detail::Margins<S>::kCoarse &&
-        fabs(h) < detail::Margins<S>::smallestFactor()) {
+    if (ScalarTraits<S>::kCoarse &&
+        fabs(h) < ScalarTraits<S>::smallestFactor()) {
       // Too small for the scalar (Q16.16 at dt = 1/1024 s, Q24.8): rounded,
       // it would add energy at every step; the link takes a little instead.
     } else {

@@ -68,7 +68,7 @@ struct PlaneConstraint {
   bool contact(const Particle<S, Dim>& p, Vec<S, Dim>& unit,
                S& penetration) const {
     penetration = offset + p.radius - dot(normal, p.position);
-    if (!(penetration >= -detail::Margins<S>::depth())) return false;
+    if (!(penetration >= -ScalarTraits<S>::depthMargin())) return false;
     unit = normal;
     return true;
   }

@@ -668,8 +668,8 @@ class World
   // a coarse scalar), so that rounding cannot leave a resting particle a
   // hair above its support, free to fall and hop for a step. The resolver
   // treats depths and speeds below the same margins as resolved.
-  static S contactMargin() { return detail::Margins<S>::depth(); }
-  static S speedMargin() { return detail::Margins<S>::speed(); }
+  static S contactMargin() { return ScalarTraits<S>::depthMargin(); }
+  static S speedMargin() { return ScalarTraits<S>::speedMargin(); }
 
   // The acceleration that every movable particle gets in this step besides
   // its accumulator (gravity added for all particles), m/s^2.
