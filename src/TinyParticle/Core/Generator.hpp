@@ -18,7 +18,9 @@
 //    whenever it likes (no lookup), it may be of any size, and the slots
 //    do not grow for it. It costs one pointer load per step.
 //
-// The shape of a generator, what its runner calls:
+// The shape of a generator, what its runner calls (each shape has its
+// runner below; "each" is a runner of its own, so that the one-particle
+// runner has no loop and no test of a):
 //   force, one particle or each:  void apply(Particle& p, S dt)
 //   force, a pair:                void apply(Particle& a, Particle& b, S dt)
 //   contact, one particle or each:
@@ -154,20 +156,24 @@ struct InSketch {
   }
 };
 
-// Runs a force on particle a, or on every movable particle when a is
-// kAllIndex: g.apply(p, dt).
+// Runs a force on particle a: g.apply(p, dt), unless p is immovable.
 template <class W, class G, class Where>
 struct ForceRunner {
-  typedef typename W::Scalar S;
+  static void apply(W& world, typename W::ForceSlot& slot,
+                    typename W::Scalar dt) {
+    typename W::ParticleType& p = WorldAccess::particle(world, slot.a);
+    if (!p.isStatic()) Where::template of<G>(slot).apply(p, dt);
+  }
+};
+
+// Runs a force on every movable particle (a is kAllIndex).
+template <class W, class G, class Where>
+struct EachForceRunner {
   typedef typename W::ParticleType P;
 
-  static void apply(W& world, typename W::ForceSlot& slot, S dt) {
+  static void apply(W& world, typename W::ForceSlot& slot,
+                    typename W::Scalar dt) {
     G& g = Where::template of<G>(slot);
-    if (slot.a != kAllIndex) {
-      P& p = WorldAccess::particle(world, slot.a);
-      if (!p.isStatic()) g.apply(p, dt);
-      return;
-    }
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       P& p = WorldAccess::particle(world, i);
       if ((p.flags & (P::kInUse | P::kStatic)) == P::kInUse) g.apply(p, dt);
@@ -186,27 +192,33 @@ struct PairForceRunner {
   }
 };
 
-// Runs a contact generator for particle a, or for every colliding, movable,
-// awake particle when a is kAllIndex.
+// Runs a contact generator for particle a, unless it is immovable.
 template <class W, class G, class Where>
 struct ContactRunner {
-  typedef typename W::Scalar S;
-  typedef typename W::Vec V;
+  static void generate(W& world, typename W::ConstraintSlot& slot,
+                       uint8_t source) {
+    const typename W::ParticleType& p = WorldAccess::particle(world, slot.a);
+    if (p.isStatic()) return;
+    typename W::Vec normal;
+    typename W::Scalar penetration;
+    if (Where::template of<G>(slot).contact(p, normal, penetration)) {
+      WorldAccess::addContact(world, slot.a, kNoIndex, normal, penetration,
+                              source);
+    }
+  }
+};
+
+// Runs a contact generator for every colliding, movable, awake particle (a
+// is kAllIndex).
+template <class W, class G, class Where>
+struct EachContactRunner {
   typedef typename W::ParticleType P;
 
   static void generate(W& world, typename W::ConstraintSlot& slot,
                        uint8_t source) {
     G& g = Where::template of<G>(slot);
-    V normal;
-    S penetration;
-    if (slot.a != kAllIndex) {
-      const P& p = WorldAccess::particle(world, slot.a);
-      if (!p.isStatic() && g.contact(p, normal, penetration)) {
-        WorldAccess::addContact(world, slot.a, kNoIndex, normal, penetration,
-                                source);
-      }
-      return;
-    }
+    typename W::Vec normal;
+    typename W::Scalar penetration;
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       const P& p = WorldAccess::particle(world, i);
       if ((p.flags & (P::kInUse | P::kCollides | P::kStatic | P::kAsleep)) !=

@@ -12,7 +12,9 @@
 
 namespace tinyparticle {
 
-// A generator class (Core/Generator.hpp), run for one particle.
+// A generator class (Core/Generator.hpp) with a runner of its own (run()):
+// a force that is zero (the usual case: nobody pushes) is left before the
+// particle is looked up.
 template <typename S, uint8_t Dim>
 struct CustomForce {
   static const uint8_t kShape = SlotShape::kNone;
@@ -24,9 +26,12 @@ struct CustomForce {
     return custom;
   }
 
-  void apply(Particle<S, Dim>& p, S) const {
-    if (detail::isZeroVector(*force)) return;
-    p.acceleration.addScaled(*force, p.inverseMass);
+  template <class W>
+  static void run(W& world, typename W::ForceSlot& slot, S) {
+    const Vec<S, Dim>& push = *InSlot::of<CustomForce>(slot).force;
+    if (detail::isZeroVector(push)) return;
+    Particle<S, Dim>& p = WorldAccess::particle(world, slot.a);
+    p.acceleration.addScaled(push, p.inverseMass);
   }
 };
 

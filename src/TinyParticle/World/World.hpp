@@ -243,11 +243,12 @@ class World
 
   // Drag k1 |v| + k2 |v|^2 against the velocity, on every particle or one.
   ForceId addDrag(S k1, S k2) {
-    return placeForce(kAllIndex, DragForce<S, Dim>::make(k1, k2));
+    return placeForceOnEach(DragForce<S, Dim>::make(k1, k2));
   }
   ForceId addDrag(ParticleId target, S k1, S k2) {
     if (!check(target)) return ForceId();
-    return placeForce(target.index, DragForce<S, Dim>::make(k1, k2));
+    return placeForceOn(target.index, kNoIndex,
+                        DragForce<S, Dim>::make(k1, k2));
   }
 
   // A spring of stiffness k (N/m) and rest length (m) between two particles.
@@ -257,8 +258,8 @@ class World
   // A spring from a particle to a fixed point.
   ForceId addSpring(ParticleId a, const Vec& anchor, S k, S restLength) {
     if (!check(a)) return ForceId();
-    return placeForce(a.index, kAnchorIndex,
-                      AnchoredSpringForce<S, Dim>::make(anchor, k, restLength));
+    return placeForceOn(a.index, kAnchorIndex,
+                        AnchoredSpringForce<S, Dim>::make(anchor, k, restLength));
   }
   // A bungee: a spring that only pulls, and only beyond its rest length.
   ForceId addBungee(ParticleId a, ParticleId b, S k, S restLength) {
@@ -267,7 +268,7 @@ class World
   }
   ForceId addBungee(ParticleId a, const Vec& anchor, S k, S restLength) {
     if (!check(a)) return ForceId();
-    return placeForce(
+    return placeForceOn(
         a.index, kAnchorIndex,
         AnchoredSpringForce<S, Dim, true>::make(anchor, k, restLength));
   }
@@ -278,12 +279,22 @@ class World
   // one. The full force density * volume * 9.81 is computed once, in float
   // (on every platform).
   ForceId addBuoyancy(S surface, S maxDepth, S volume, S density) {
-    return addBuoyancyFor(kAllIndex, surface, maxDepth, volume, density);
+    BuoyancyForce<S, Dim> buoyancy;
+    if (!BuoyancyForce<S, Dim>::make(buoyancy, surface, maxDepth, volume,
+                                     density)) {
+      return refused();
+    }
+    return placeForceOnEach(buoyancy);
   }
   ForceId addBuoyancy(ParticleId target, S surface, S maxDepth, S volume,
                       S density) {
     if (!check(target)) return ForceId();
-    return addBuoyancyFor(target.index, surface, maxDepth, volume, density);
+    BuoyancyForce<S, Dim> buoyancy;
+    if (!BuoyancyForce<S, Dim>::make(buoyancy, surface, maxDepth, volume,
+                                     density)) {
+      return refused();
+    }
+    return placeForceOn(target.index, kNoIndex, buoyancy);
   }
 
   // A stiff spring (Forces/StiffSpring.hpp) from a particle to an anchor:
@@ -300,11 +311,10 @@ class World
     if (!StiffSpringForce<S, Dim>::make(
             spring, anchor, k, damping, dt,
             particleAt(target.index).inverseMass)) {
-      mError |= WorldError::kBadArgument;
       TINYPARTICLE_DEBUG_PRINT("stiff spring does not fit the scalar");
-      return ForceId();
+      return refused();
     }
-    return placeForce(target.index, kAnchorIndex, spring);
+    return placeForceOn(target.index, kAnchorIndex, spring);
   }
 
   // A force (N) read each step from a vector the sketch owns.
@@ -314,7 +324,8 @@ class World
       mError |= WorldError::kBadArgument;
       return ForceId();
     }
-    return placeForce(target.index, CustomForce<S, Dim>::make(force));
+    return placeForce(target.index, kNoIndex, CustomForce<S, Dim>::make(force),
+                      &CustomForce<S, Dim>::template run<World>);
   }
 
   // A force generator of the sketch's own (extras/doc/design.md, "Adding a
@@ -327,7 +338,7 @@ class World
   // sketch may change its fields at any time. Errors as for the others.
   template <class G>
   ForceId addForce(G& generator) {
-    return placeSketchForce<ForceRunner<World, G, InSketch> >(
+    return placeSketchForce<EachForceRunner<World, G, InSketch> >(
         kAllIndex, kNoIndex, &generator);
   }
   template <class G>
@@ -422,7 +433,7 @@ class World
     return placeConstraint(
         kAllIndex, kNoIndex, restitution,
         PlaneConstraint<S, Dim>::make(unit, offset),
-        &ContactRunner<World, PlaneConstraint<S, Dim>, InSlot>::generate);
+        &EachContactRunner<World, PlaneConstraint<S, Dim>, InSlot>::generate);
   }
 
   // The walls of the box low <= x <= high (2 Dim axis-aligned planes, facing
@@ -459,7 +470,7 @@ class World
   template <class G>
   ConstraintId addConstraint(G& generator, S restitution) {
     requireContacts();
-    return placeSketchConstraint<ContactRunner<World, G, InSketch> >(
+    return placeSketchConstraint<EachContactRunner<World, G, InSketch> >(
         kAllIndex, kNoIndex, restitution, &generator);
   }
   template <class G>
@@ -1053,15 +1064,18 @@ class World
     f->apply = apply;
     return id;
   }
-  // ... run for particle a (or each, a = kAllIndex) by the ForceRunner.
+  // ... run for particle a by the ForceRunner (b: kNoIndex, or
+  // kAnchorIndex for an anchorable class with its anchor).
   template <class G>
-  ForceId placeForce(uint8_t a, uint8_t b, const G& generator) {
+  ForceId placeForceOn(uint8_t a, uint8_t b, const G& generator) {
     return placeForce(a, b, generator,
                       &ForceRunner<World, G, InSlot>::apply);
   }
+  // ... run for every movable particle by the EachForceRunner.
   template <class G>
-  ForceId placeForce(uint8_t a, const G& generator) {
-    return placeForce(a, kNoIndex, generator);
+  ForceId placeForceOnEach(const G& generator) {
+    return placeForce(kAllIndex, kNoIndex, generator,
+                      &EachForceRunner<World, G, InSlot>::apply);
   }
   // ... run for the pair a, b by the PairForceRunner.
   template <class G>
@@ -1108,15 +1122,10 @@ class World
     return true;
   }
 
-  ForceId addBuoyancyFor(uint8_t target, S surface, S maxDepth, S volume,
-                         S density) {
-    BuoyancyForce<S, Dim> buoyancy;
-    if (!BuoyancyForce<S, Dim>::make(buoyancy, surface, maxDepth, volume,
-                                     density)) {
-      mError |= WorldError::kBadArgument;
-      return ForceId();
-    }
-    return placeForce(target, buoyancy);
+  // A generator whose parameters are out of range: an invalid id.
+  ForceId refused() {
+    mError |= WorldError::kBadArgument;
+    return ForceId();
   }
 
   // A rod just added (or an invalid id): its length's inverse and its
