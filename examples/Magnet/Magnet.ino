@@ -1,5 +1,5 @@
-// Magnet: a steel ball on a 0.5 m rod hangs over a magnet that slides along
-// the floor as a dial turns; the ball leans towards it. The magnet's pull is
+// Magnet: a steel ball hangs on a spring over a magnet that slides to and
+// fro as a dial turns; the ball swings towards it and settles over it. The magnet's pull is
 // a force generator written here, in the sketch (struct Magnet below), and
 // added to the world with one call, world.addForce(magnet, ball): the
 // library is not touched, and the world runs it each step as it runs its
@@ -12,17 +12,18 @@
 // simulated A0 reads 0: the magnet sits at the left end).
 //
 // What you should see: ASCII frames, five a second, of the pivot and the
-// magnet ('+', the magnet 15 cm below the ball's lowest point), the rod ('.') and the ball
+// magnet ('+', the magnet below the ball), the spring ('.') and the ball
 // ('O') swinging towards the magnet and settling over its side; under each
-// frame the time, the dial, the magnet's x and the rod's angle. Turn the
+// frame the time, the dial, the magnet's x and the ball's. Turn the
 // dial and the ball follows. After 8 s of simulated time it stops.
 #include <TinyParticle.h>
 #include <avr/sleep.h>
 
 typedef Q16_16 S;
-// 2D; 3 particles (pivot, ball, the magnet's marker), 2 forces (gravity,
-// the magnet), 1 rod, no contact slot (rods take none).
-typedef World<S, 2, 3, 2, 1, 0> MagnetWorld;
+// 2D; 3 particles (pivot, ball, the magnet's marker), 3 forces (gravity,
+// the spring, the magnet), no constraint: a world without constraints
+// links no contact code, and the sketch fits a Leonardo too.
+typedef World<S, 2, 3, 3> MagnetWorld;
 MagnetWorld world;
 
 // An inverse-square attractor: a pull of strength / d^2 towards the pole,
@@ -64,11 +65,11 @@ void setup() {
   while (!Serial);
   Serial.println(F("Magnet: a user force generator, dial on A0"));
   pivot = world.addFixedParticle(Vec2<S>(0.0, 0.4));
-  ball = world.addParticle(Vec2<S>(0.0, -0.1), S(0.05), S(0.02));  // 50 g
-  world.particle(ball)->setDampingRate(S(0.6));
+  ball = world.addParticle(Vec2<S>(0.0, -0.05), S(0.05), S(0.02));  // 50 g
+  world.particle(ball)->setDampingRate(S(1.5));
   marker = world.addFixedParticle(magnet.pole);
   world.particle(marker)->setCollides(false);
-  world.addRod(ball, pivot, S(0.5));
+  world.addSpring(ball, pivot, S(40), S(0.45));  // 40 N/m, 0.45 m at rest
   world.addGravity();
   world.addForce(magnet, ball);  // the sketch's own generator
 }
@@ -82,17 +83,16 @@ void loop() {
   while (drawing && Serial.availableForWrite() >= renderer.lineLength()) {
     if (renderer.drawLine(world, Serial)) {
       drawing = false;
-      const Vec2<S> arm = world.particle(ball)->position -
-                          world.particle(pivot)->position;
+      // print() writes fixed point without float code (Text/Print.hpp).
       Serial.print(F("t="));
-      Serial.print(timing.steps() / 256.0, 1);
+      print(Serial, S(long(timing.steps())) * S(1.0 / 256), 1);
       Serial.print(F(" s  dial "));
       Serial.print(analogRead(A0));
       Serial.print(F("  magnet x "));
-      Serial.print(magnet.pole.x.toFloat(), 3);
-      Serial.print(F(" m  angle "));
-      Serial.print(atan2(arm.x, -arm.y).toFloat(), 3);
-      Serial.println(F(" rad"));
+      print(Serial, magnet.pole.x, 3);
+      Serial.print(F(" m  ball x "));
+      print(Serial, world.particle(ball)->position.x, 3);
+      Serial.println(F(" m"));
     }
   }
 
