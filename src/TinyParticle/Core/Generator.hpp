@@ -161,8 +161,9 @@ template <class W, class G, class Where>
 struct ForceRunner {
   static void apply(W& world, typename W::ForceSlot& slot,
                     typename W::Scalar dt) {
+    G& g = Where::template of<G>(slot);
     typename W::ParticleType& p = WorldAccess::particle(world, slot.a);
-    if (!p.isStatic()) Where::template of<G>(slot).apply(p, dt);
+    if (!p.isStatic()) g.apply(p, dt);
   }
 };
 

@@ -42,9 +42,9 @@ struct SpringForce {
 
   // -k (length - rest) / length for the span delta; false when there is
   // no force (no direction, or a slack bungee). Shared with the anchored
-  // kind.
-  static bool forcePerLength(const Vec<S, Dim>& delta, S k, S rest,
-                             S& perLength) {
+  // kind, and inlined in both.
+  TINYPARTICLE_ALWAYS_INLINE static bool forcePerLength(
+      const Vec<S, Dim>& delta, S k, S rest, S& perLength) {
     S lengthSquared = delta.magnitudeSquared();
     if (lengthSquared == S()) return false;  // no direction to push in
     S length = sqrt(lengthSquared);
