@@ -12,7 +12,8 @@
 //
 // Where a generator's parameters live:
 //  - a built-in generator's, in the slot itself (a union of the built-in
-//    classes, as large as the largest: 20 bytes in 2D Q16.16);
+//    classes, as large as the largest: in 2D Q16.16, 16 bytes for forces
+//    and 26 for constraints);
 //  - a sketch's generator, in the sketch: the slot holds a pointer to the
 //    object, which must outlive the slot. The sketch changes its fields
 //    whenever it likes (no lookup), it may be of any size, and the slots
