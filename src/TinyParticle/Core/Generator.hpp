@@ -31,8 +31,10 @@
 //                  S& penetration)
 // A contact generator returns true when a contact is to be made: the unit
 // normal pushes p (or a) out, and the penetration is positive while the
-// constraint is violated. The runner skips immovable particles (and, over
-// "each", particles that do not collide or sleep), as the planes do.
+// constraint is violated. The runners for one particle and for each skip
+// immovable particles (a contact generator over each also those that do
+// not collide or sleep, as the planes do); a pair's contact generator is
+// skipped when both ends are immovable, a pair's force never.
 #pragma once
 
 #include <stdint.h>
