@@ -34,7 +34,7 @@ void run(S k, uint16_t stepsPerSecond, float seconds, uint8_t printEvery) {
   // 1 kg, k = 100 N/m, rest 0.5 m, released at 0.6 m; then the stiffness
   // is changed through the force's slot.
   SpringScene scene = buildSpring(hooke);
-  hooke.force(scene.spring)->params.spring.stiffness = k;
+  hooke.forceParams<AnchoredSpringForce<S, 2> >(scene.spring)->stiffness = k;
   ParticleId mass = stiff.addParticle(Vec2<S>(0.6, 0.0), S(1));
   const S dt = S(1) / S(int(stepsPerSecond));
   stiff.addStiffSpring(mass, Vec2<S>(0.5, 0.0), k, S(0), dt);

@@ -67,6 +67,17 @@ template tinyparticle::Q24_8 checkVectorFunctions<tinyparticle::Q24_8>();
 template tinyparticle::Q8_8 checkVectorFunctions<tinyparticle::Q8_8>();
 template tinyparticle::Float checkVectorFunctions<tinyparticle::Float>();
 
+// A sketch's own generator of every shape (World::addForce, addConstraint).
+template <class W>
+struct CheckGenerator {
+  typedef typename W::ParticleType P;
+  typedef typename W::Scalar S;
+  void apply(P& p, S) { p.addForce(typename W::Vec()); }
+  void apply(P&, P&, S) {}
+  bool contact(const P&, typename W::Vec&, S&) { return false; }
+  bool contact(const P&, const P&, typename W::Vec&, S&) { return false; }
+};
+
 // World, Forces, Contacts, Render, Loop, Scenes: stepping, drawing and the
 // scene builders for each scalar and dimension. Not meant to run.
 template <typename S, uint8_t D>
@@ -74,6 +85,18 @@ void checkEngine() {
   typedef tinyparticle::World<S, D, 4, 4, 4, 4> W;
   static W world;
   static typename W::Vec push;
+  static CheckGenerator<W> mine;
+  const tinyparticle::ParticleId a = world.idOf(0), b = world.idOf(1);
+  world.addForce(mine);
+  world.addForce(mine, a);
+  world.addForce(mine, a, b);
+  world.addConstraint(mine, S(0.5));
+  world.addConstraint(mine, a, S(0.5));
+  world.addConstraint(mine, a, b, S(0.5));
+  world.template forceParams<tinyparticle::DragForce<S, D> >(
+      tinyparticle::ForceId());
+  world.template constraintParams<typename W::LinkParamsType>(
+      tinyparticle::ConstraintId());
   world.step(S(1.0 / 256));
   world.step(S(1.0 / 256), 2);
   struct Sink {

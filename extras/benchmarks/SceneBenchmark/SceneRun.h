@@ -228,16 +228,18 @@ class Tracker {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       const typename W::ConstraintSlot& c = world.constraintAt(i);
       if (!c.inUse() || !world.isRod(c)) continue;
+      const typename W::LinkParamsType& link =
+          c.params.template as<typename W::LinkParamsType>();
       const typename W::ParticleType& a = world.particleAt(c.a);
       R d2 = 0;
       for (uint8_t k = 0; k < W::kDimensions; ++k) {
         const R other = c.b == kAnchorIndex
-                            ? R(c.params.link.anchor[k].toFloat())
+                            ? R(link.anchor[k].toFloat())
                             : R(world.particleAt(c.b).position[k].toFloat());
         const R d = R(a.position[k].toFloat()) - other;
         d2 += d * d;
       }
-      const R length = R(c.params.link.length.toFloat());
+      const R length = R(link.length.toFloat());
       R e = R(::sqrt(d2)) / length - R(1);
       if (e < 0) e = -e;
       if (e > mLinkError) mLinkError = e;

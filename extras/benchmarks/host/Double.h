@@ -69,11 +69,9 @@ class Double {
   double mValue;
 };
 
-// A scalar for World (Math/ScalarTraits.hpp).
+// A scalar for World (Math/ScalarTraits.hpp): its margins computed.
 template <>
-struct IsScalar<Double> {
-  static const bool value = true;
-};
+struct ScalarTraits<Double> : ComputedScalarTraits<Double> {};
 
 inline Double fabs(Double x) { return Double(::fabs(x.toDouble())); }
 inline Double fmin(Double a, Double b) { return b < a ? b : a; }

@@ -57,7 +57,8 @@ test(StiffSpringGainsSameOnEveryPlatform) {
   ParticleId p = w.addParticle(V(0.1, 0.0), Q16_16(1));
   ForceId f = w.addStiffSpring(p, V(), Q16_16(2000), Q16_16(5), Q16_16(1.0 / 256));
   assertTrue(f.isValid());
-  const StiffSpringParams<Q16_16, 2>& s = w.force(f)->params.stiffSpring;
+  const StiffSpringForce<Q16_16, 2>& s =
+      *w.forceParams<StiffSpringForce<Q16_16, 2> >(f);
   assertEqual(s.positionGain.raw(), (int32_t) -129470536L);
   assertEqual(s.velocityGain.raw(), (int32_t) -324501L);
 }

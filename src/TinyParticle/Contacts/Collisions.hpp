@@ -42,7 +42,7 @@
 #include "../Configuration.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
-#include "../World/Handle.hpp"
+#include "../Core/Handle.hpp"
 
 namespace tinyparticle {
 

@@ -22,7 +22,7 @@
 // link (no tangential speed) gains nothing. The square root is expanded:
 // the dropped terms are O(dt^4) per step. In fixed point, a factor k - 1
 // below eight units of the format is not applied
-// (Margins::smallestFactor()): rounded, it would be off by half of itself
+// (ScalarTraits::smallestFactor()): rounded, it would be off by half of itself
 // every step in the same direction, and add energy; there the cable keeps
 // the plain, slightly lossy behaviour.
 //
@@ -36,14 +36,16 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
-#include "../World/Handle.hpp"
-#include "../World/Margins.hpp"
+#include "../Core/Generator.hpp"
+#include "../Math/ScalarTraits.hpp"
 #include "Resolver.hpp"
 
 namespace tinyparticle {
 
+// The parameters of rods and cables (a kind of World/Slots.hpp).
 template <typename S, uint8_t Dim>
 struct LinkParams {
+  static const uint8_t kShape = SlotShape::kAnchorable;
   Vec<S, Dim> anchor;  // anchored links only (b == kAnchorIndex)
   S length;            // rod length, or the cable's maximum length, m
   // Rods only (Contacts/RodSolver.hpp):
@@ -59,14 +61,17 @@ struct CableConstraint {
   typedef typename W::Vec V;
   typedef typename W::ParticleType P;
 
+  typedef LinkParams<S, W::kDimensions> Link;
+
   static void generate(W& world, typename W::ConstraintSlot& slot,
                        uint8_t source) {
+    const Link& link = InSlot::of<Link>(slot);
     P& a = world.particleAt(slot.a);
     P* b = nullptr;
     V delta = a.position;
     if (kAnchored) {
       if (a.isStatic()) return;
-      detail::subtractNonZero(delta, slot.params.link.anchor);
+      detail::subtractNonZero(delta, link.anchor);
     } else {
       b = &world.particleAt(slot.b);
       if (a.isStatic() && b->isStatic()) return;
@@ -75,7 +80,7 @@ struct CableConstraint {
     S lengthSquared = delta.magnitudeSquared();
     if (detail::isZero(lengthSquared)) return;  // ends together: no direction
     S length = sqrt(lengthSquared);
-    const S target = slot.params.link.length;
+    const S target = link.length;
     if (length < target) return;  // slack
     // The normal pushes a: away from b while too close, towards b while
     // too far (or exactly right: then the contact only removes the closing
@@ -107,8 +112,8 @@ struct CableConstraint {
     }
     const S q = world.stepScaler()(inverse);  // dt / L
     const S h = q * (-separating - detail::half(v->magnitudeSquared() * q));
-    if (detail::Margins<S>::kCoarse &&
-        fabs(h) < detail::Margins<S>::smallestFactor()) {
+    if (ScalarTraits<S>::kCoarse &&
+        fabs(h) < ScalarTraits<S>::smallestFactor()) {
       // Too small for the scalar (Q16.16 at dt = 1/1024 s, Q24.8): rounded,
       // it would add energy at every step; the link takes a little instead.
     } else {

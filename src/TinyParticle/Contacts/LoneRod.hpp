@@ -41,7 +41,7 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
-#include "../World/Handle.hpp"
+#include "../Core/Handle.hpp"
 #include "RodSolver.hpp"
 
 namespace tinyparticle {
@@ -137,14 +137,14 @@ struct LoneRods {
     const bool both = kTwoMovable && moving == 2;
     bool fromB;
     P& end = movingEnd(world, s, fromB);  // a when both move
-    V u = s.params.link.direction;
+    V u = Rods::linkOf(s).direction;
     V d = end.position;
     if (fromB) {
       u = -u;
       detail::subtractNonZero(d, world.particleAt(s.a).position);
     } else {
       detail::subtractNonZero(d, s.b == kAnchorIndex
-                                     ? s.params.link.anchor
+                                     ? Rods::linkOf(s).anchor
                                      : world.particleAt(s.b).position);
     }
     const V* w = &end.velocity;
@@ -155,7 +155,7 @@ struct LoneRods {
     }
     S error;
     bool turning;
-    const S speed = Rods::positionSpeed(d, *w, u, s.params.link, pass, error,
+    const S speed = Rods::positionSpeed(d, *w, u, Rods::linkOf(s), pass, error,
                                         turning);
     if (turning) pass.turned = true;
     if (both) {
@@ -171,14 +171,14 @@ struct LoneRods {
   static void rattle(W& world, Slot& s, bool unit) {
     const uint8_t moving = movingEnds<kTwoMovable>(world, s);
     if (moving == 0) return;
-    Rods::setDirection(Rods::span(world, s), s.params.link, unit);
+    Rods::setDirection(Rods::span(world, s), Rods::linkOf(s), unit);
     if (kTwoMovable && moving == 2) {
       rattleBoth(world, s);
       return;
     }
     bool fromB;
     P& end = movingEnd(world, s, fromB);
-    removeRadial(end.velocity, s.params.link.direction);
+    removeRadial(end.velocity, Rods::linkOf(s).direction);
   }
 
   // How many ends of the rod move: 0, 1 or 2 (at most 1 without
@@ -217,7 +217,7 @@ struct LoneRods {
                                               S speed, S error) {
     P& a = world.particleAt(s.a);
     P& b = world.particleAt(s.b);
-    const V& u = s.params.link.direction;
+    const V& u = Rods::linkOf(s).direction;
     const S share = shareOfA(a, b);
     a.velocity.addScaled(u, speed * share);
     b.velocity.addScaled(u, -(speed - speed * share));
@@ -229,7 +229,7 @@ struct LoneRods {
   TINYPARTICLE_NOINLINE static void rattleBoth(W& world, const Slot& s) {
     P& a = world.particleAt(s.a);
     P& b = world.particleAt(s.b);
-    const V& u = s.params.link.direction;
+    const V& u = Rods::linkOf(s).direction;
     const S radial = dot(a.velocity - b.velocity, u);
     const S share = shareOfA(a, b);
     a.velocity.addScaled(u, -(radial * share));

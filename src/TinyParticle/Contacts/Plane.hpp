@@ -14,15 +14,11 @@
 
 #include "../Configuration.hpp"
 #include "../Math/Vec.hpp"
-#include "../World/Handle.hpp"
+#include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
+#include "../Math/ScalarTraits.hpp"
 
 namespace tinyparticle {
-
-template <typename S, uint8_t Dim>
-struct PlaneParams {
-  Vec<S, Dim> normal;  // unit length, pointing into the allowed side
-  S offset;            // m: the plane is dot(normal, x) = offset
-};
 
 namespace detail {
 
@@ -44,25 +40,37 @@ struct AxisMember<Vec<S, 3> > {
 
 }  // namespace detail
 
-template <class W>
+// A generator class (Core/Generator.hpp). A plane of any normal is run by
+// the ContactRunner, as a sketch's contact generator would be; a plane
+// along an axis by generateAxis(), its fast path.
+template <typename S, uint8_t Dim>
 struct PlaneConstraint {
-  typedef typename W::Scalar S;
-  typedef typename W::Vec V;
+  static const uint8_t kShape = SlotShape::kNone;
+  Vec<S, Dim> normal;  // unit length, pointing into the allowed side
+  S offset;            // m: the plane is dot(normal, x) = offset
 
-  // Any normal.
-  static void generate(W& world, typename W::ConstraintSlot& slot,
-                       uint8_t source) {
-    const V normal = slot.params.plane.normal;
-    const S offset = slot.params.plane.offset;
-    const S margin = -W::contactMargin();
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      const typename W::ParticleType& p = world.particleAt(i);
-      if (!isTarget(p)) continue;
-      S penetration = offset + p.radius - dot(normal, p.position);
-      if (penetration >= margin) {
-        world.addContact(i, kNoIndex, normal, penetration, source);
-      }
-    }
+  // The plane dot(unit, x) = offset; unit must be of length 1.
+  static PlaneConstraint make(const Vec<S, Dim>& unit, S offset) {
+    PlaneConstraint plane;
+    plane.normal = unit;
+    plane.offset = offset;
+    return plane;
+  }
+  // The plane x[axis] >= offset (positive) or x[axis] <= offset (negative).
+  static PlaneConstraint alongAxis(uint8_t axis, bool positive, S offset) {
+    PlaneConstraint plane;
+    plane.normal[axis] = positive ? S(1) : S(-1);
+    plane.offset = positive ? offset : -offset;
+    return plane;
+  }
+
+  // Any normal: a contact from within the contact margin on.
+  bool contact(const Particle<S, Dim>& p, Vec<S, Dim>& unit,
+               S& penetration) const {
+    penetration = offset + p.radius - dot(normal, p.position);
+    if (!(penetration >= -ScalarTraits<S>::depthMargin())) return false;
+    unit = normal;
+    return true;
   }
 
   // A normal of +1 or -1 along one axis: one coordinate instead of a dot
@@ -70,13 +78,16 @@ struct PlaneConstraint {
   // all axes, found from the normal, costs a compare per plane and step and
   // saves flash. Tried: one pass over the particles for a whole box; it was
   // no faster on AVR, the walls' data no longer fit in registers.)
+  template <class W>
   static void generateAxis(W& world, typename W::ConstraintSlot& slot,
                            uint8_t source) {
-    typedef typename W::ParticleType P;
-    const V& normal = slot.params.plane.normal;
-    const S offset = slot.params.plane.offset;
+    typedef Vec<S, Dim> V;
+    typedef Particle<S, Dim> P;
+    const PlaneConstraint& plane = InSlot::of<PlaneConstraint>(slot);
+    const V& normal = plane.normal;
+    const S offset = plane.offset;
     uint8_t axis = 0;
-    while (axis + 1 < W::kDimensions && normal[axis] == S()) ++axis;
+    while (axis + 1 < Dim && normal[axis] == S()) ++axis;
     const bool positive = normal[axis] > S();
     // The coordinate as a member pointer: one load at a fixed offset per
     // particle, where v[axis] would select the component every time.
@@ -87,7 +98,7 @@ struct PlaneConstraint {
     // x + r >= -(offset + margin). The loops only test; the rare contact is
     // made out of line, so that the loops keep their values in registers.
     const S limit = offset + W::contactMargin();
-    P* p = &world.particleAt(0);
+    P* p = &WorldAccess::particle(world, 0);
     if (positive) {
       for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
         if (!isTarget(*p)) continue;
@@ -114,11 +125,12 @@ struct PlaneConstraint {
   // velocity and of the acceleration, with the normal's sign (exactly what
   // the dot products give); the sign does not matter for the acceleration,
   // only whether it is zero (W::isIdle()).
-  TINYPARTICLE_NOINLINE static void touch(W& world, const V& normal,
-                                          S V::*along, bool positive,
-                                          uint8_t i, S penetration,
-                                          uint8_t source) {
-    const typename W::ParticleType& p = world.particleAt(i);
+  template <class W>
+  TINYPARTICLE_NOINLINE static void touch(W& world, const Vec<S, Dim>& normal,
+                                          S Vec<S, Dim>::*along,
+                                          bool positive, uint8_t i,
+                                          S penetration, uint8_t source) {
+    const Particle<S, Dim>& p = WorldAccess::particle(world, i);
     const S velocity = p.velocity.*along;
     const S separating = positive ? velocity : -velocity;
     const S acceleration =
@@ -127,8 +139,8 @@ struct PlaneConstraint {
     world.recordContact(i, kNoIndex, normal, penetration, separating, source);
   }
 
-  static bool isTarget(const typename W::ParticleType& p) {
-    typedef typename W::ParticleType P;
+  static bool isTarget(const Particle<S, Dim>& p) {
+    typedef Particle<S, Dim> P;
     return (p.flags & (P::kInUse | P::kCollides | P::kStatic | P::kAsleep)) ==
            (P::kInUse | P::kCollides);
   }

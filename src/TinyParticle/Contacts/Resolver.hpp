@@ -37,7 +37,7 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
-#include "../World/Handle.hpp"
+#include "../Core/Handle.hpp"
 #include "Contact.hpp"
 
 namespace tinyparticle {

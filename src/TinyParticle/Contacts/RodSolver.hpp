@@ -67,7 +67,7 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
-#include "../World/Handle.hpp"
+#include "../Core/Handle.hpp"
 
 namespace tinyparticle {
 
@@ -80,6 +80,12 @@ struct RodSolver {
   typedef typename W::Vec V;
   typedef typename W::ParticleType P;
   typedef typename W::ConstraintSlot Slot;
+  typedef typename W::LinkParamsType Link;  // a rod's parameters
+
+  static Link& linkOf(Slot& s) { return s.params.template as<Link>(); }
+  static const Link& linkOf(const Slot& s) {
+    return s.params.template as<Link>();
+  }
 
   static const uint8_t kMaxPasses = 8;
 
@@ -89,7 +95,7 @@ struct RodSolver {
   // A rod just added: its length's inverse and its first direction. False
   // (nothing set) for a length that is not positive.
   static bool start(W& world, Slot& s) {
-    typename W::LinkParamsType& link = s.params.link;
+    typename W::LinkParamsType& link = linkOf(s);
     if (!(link.length > S())) return false;
     link.inverseLength = S(1) / link.length;
     V d = span(world, s);
@@ -284,7 +290,7 @@ struct RodSolver {
   }
 
   static typename W::LinkParamsType& linkParamsOf(W& world, uint8_t i) {
-    return world.constraintAt(i).params.link;
+    return linkOf(world.constraintAt(i));
   }
 
   // ---- The solves ---------------------------------------------------------
@@ -294,7 +300,7 @@ struct RodSolver {
     V d = world.particleAt(s.a).position;
     // (A pivot is often at the origin: zeros are skipped.)
     detail::subtractNonZero(d, s.b == kAnchorIndex
-                                   ? s.params.link.anchor
+                                   ? linkOf(s).anchor
                                    : world.particleAt(s.b).position);
     return d;
   }
@@ -313,7 +319,7 @@ struct RodSolver {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
       Slot& s = world.constraintAt(i);
-      setDirection(span(world, s), s.params.link, true);
+      setDirection(span(world, s), linkOf(s), true);
     }
   }
   // A rod's direction from its span d. Near its length, d / L is nearly a
@@ -369,11 +375,11 @@ struct RodSolver {
   // along u that brings the rod to its length at the end of the step, and
   // in `error` the move (m) that mends its length now.
   static S rightSide(W& world, const Slot& s, Pass& pass, S& error) {
-    const V& u = s.params.link.direction;
+    const V& u = linkOf(s).direction;
     const V w = relativeVelocity(world, s);
     if (!pass.positions) return -dot(w, u);
     bool turning;
-    S right = positionSpeed(span(world, s), w, u, s.params.link, pass, error,
+    S right = positionSpeed(span(world, s), w, u, linkOf(s), pass, error,
                             turning);
     if (turning && detail::isZero(error)) pass.turned = true;
     if (!pass.first && !turning && !pass.coupled) {
@@ -478,7 +484,7 @@ struct RodSolver {
   // Applies rod s's impulse mu (per unit mass along u) to the velocities.
   static void apply(W& world, const Slot& s, S mu, const Pass&) {
     if (detail::isZero(mu)) return;
-    const V& u = s.params.link.direction;
+    const V& u = linkOf(s).direction;
     P& a = world.particleAt(s.a);
     if (!a.isStatic()) a.velocity.addScaled(u, a.inverseMass * mu);
     if (s.b != kAnchorIndex) {
@@ -491,7 +497,7 @@ struct RodSolver {
   // first pass's correction of the length error, without a velocity.
   static void move(W& world, const Slot& s, S speed, const Pass& pass) {
     if (detail::isZero(speed)) return;
-    const V& u = s.params.link.direction;
+    const V& u = linkOf(s).direction;
     P& a = world.particleAt(s.a);
     if (!a.isStatic()) shift(a.position, u, a.inverseMass * speed, pass);
     if (s.b != kAnchorIndex) {
@@ -506,7 +512,7 @@ struct RodSolver {
   // The coupling C_ij of rod r with the rod before it in its chain.
   static S coupling(W& world, const Slot& r, const Slot& prev) {
     S c = S();
-    const S cosine = dot(r.params.link.direction, prev.params.link.direction);
+    const S cosine = dot(linkOf(r).direction, linkOf(prev).direction);
     const uint8_t ends[2] = {r.a, r.b};
     for (uint8_t k = 0; k < 2; ++k) {
       const uint8_t p = ends[k];
@@ -523,7 +529,7 @@ struct RodSolver {
   static void factor(W& world, const Slot& s, uint8_t i, Row* rows) {
     S pivot = inverseMassOf(world, s.a) + inverseMassOf(world, s.b);
     S multiplier = S();
-    const uint8_t prev = s.params.link.prev;
+    const uint8_t prev = linkOf(s).prev;
     if (prev != kNoIndex) {
       const S c = coupling(world, s, world.constraintAt(prev));
       if (!detail::isZero(c)) {
@@ -540,14 +546,14 @@ struct RodSolver {
   static void sweep(W& world, Row* rows, Pass& pass) {
     for (uint8_t head = 0; head < W::kConstraintCapacity; ++head) {
       if (!isRodAt(world, head) ||
-          world.constraintAt(head).params.link.prev != kNoIndex) {
+          linkOf(world.constraintAt(head)).prev != kNoIndex) {
         continue;
       }
       // Down the chain: eliminate the coupling with the rod before.
       uint8_t last = head;
       S previousRight = S(), previousMove = S();
       for (uint8_t i = head; i != kNoIndex;
-           i = world.constraintAt(i).params.link.next) {
+           i = linkOf(world.constraintAt(i)).next) {
         const Slot& s = world.constraintAt(i);
         S move = S();
         S right = rightSide(world, s, pass, move);
@@ -571,7 +577,7 @@ struct RodSolver {
       S mu = S(), muMove = S();
       S nextMultiplier = S();
       for (uint8_t i = last; i != kNoIndex;
-           i = world.constraintAt(i).params.link.prev) {
+           i = linkOf(world.constraintAt(i)).prev) {
         mu = rows[i].y - nextMultiplier * mu;
         muMove = rows[i].yMove - nextMultiplier * muMove;
         nextMultiplier = rows[i].multiplier;

@@ -11,42 +11,39 @@
 
 #include <stdint.h>
 
-#include "../World/Handle.hpp"
+#include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
 
 namespace tinyparticle {
 
-template <typename S>
-struct BuoyancyParams {
+// A generator class (Core/Generator.hpp), run for one particle or for each.
+template <typename S, uint8_t Dim>
+struct BuoyancyForce {
+  static const uint8_t kShape = SlotShape::kNone;
   S surface;        // y of the water surface, m
   S maxDepth;       // half-height of the body, m
   S invTwiceDepth;  // 1 / (2 maxDepth), precomputed
   S fullForce;      // density * volume * g, N
-};
 
-template <class W>
-struct BuoyancyForce {
-  typedef typename W::Scalar S;
-
-  static void apply(W& world, typename W::ForceSlot& slot, S) {
-    const BuoyancyParams<S> water = slot.params.buoyancy;
-    if (slot.a != kAllIndex) {
-      add(world.particleAt(slot.a), water);
-      return;
-    }
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      typename W::ParticleType& p = world.particleAt(i);
-      if (p.inUse()) add(p, water);
-    }
+  // False (nothing set) for a maxDepth that is not positive. The full force
+  // density * volume * 9.81 is computed once, in float on every platform,
+  // so that the bits are the same everywhere.
+  static bool make(BuoyancyForce& out, S surface, S maxDepth, S volume,
+                   S density) {
+    if (maxDepth <= S()) return false;
+    out.surface = surface;
+    out.maxDepth = maxDepth;
+    out.invTwiceDepth = S(0.5f / maxDepth.toFloat());
+    out.fullForce = S(density.toFloat() * volume.toFloat() * 9.81f);
+    return true;
   }
 
- private:
-  static void add(typename W::ParticleType& p, const BuoyancyParams<S>& w) {
-    if (p.isStatic()) return;
+  void apply(Particle<S, Dim>& p, S) const {
     // How far the bottom of the body is below the surface, in [0, 2 d].
-    S depth = w.surface + w.maxDepth - p.position.y;
+    S depth = surface + maxDepth - p.position.y;
     if (depth <= S()) return;  // above the water
-    S force = w.fullForce;
-    if (depth < w.maxDepth + w.maxDepth) force = force * (depth * w.invTwiceDepth);
+    S force = fullForce;
+    if (depth < maxDepth + maxDepth) force = force * (depth * invTwiceDepth);
     p.acceleration.y += force * p.inverseMass;
   }
 };

@@ -5,25 +5,33 @@
 
 #include <stdint.h>
 
+#include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
 
 namespace tinyparticle {
 
+// A generator class (Core/Generator.hpp) with a runner of its own (run()):
+// a force that is zero (the usual case: nobody pushes) is left before the
+// particle is looked up.
 template <typename S, uint8_t Dim>
-struct CustomForceParams {
-  const Vec<S, Dim>* force;  // N; must outlive the generator
-};
-
-template <class W>
 struct CustomForce {
-  typedef typename W::Scalar S;
+  static const uint8_t kShape = SlotShape::kNone;
+  const Vec<S, Dim>* force;  // N; must outlive the generator
 
-  static void apply(W& world, typename W::ForceSlot& slot, S) {
-    const typename W::Vec& force = *slot.params.custom.force;
-    if (detail::isZeroVector(force)) return;
-    typename W::ParticleType& p = world.particleAt(slot.a);
-    p.acceleration.addScaled(force, p.inverseMass);
+  static CustomForce make(const Vec<S, Dim>* force) {
+    CustomForce custom;
+    custom.force = force;
+    return custom;
+  }
+
+  template <class W>
+  static void run(W& world, typename W::ForceSlot& slot, S) {
+    const Vec<S, Dim>& push = *InSlot::of<CustomForce>(slot).force;
+    if (detail::isZeroVector(push)) return;
+    Particle<S, Dim>& p = WorldAccess::particle(world, slot.a);
+    p.acceleration.addScaled(push, p.inverseMass);
   }
 };
 

@@ -6,40 +6,32 @@
 
 #include <stdint.h>
 
-#include "../World/Handle.hpp"
+#include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
 
 namespace tinyparticle {
 
-template <typename S>
-struct DragParams {
-  S k1;
-  S k2;
-};
-
-template <class W>
+// A generator class (Core/Generator.hpp): its parameters and its force on
+// one particle; the world runs it for one particle or for each.
+template <typename S, uint8_t Dim>
 struct DragForce {
-  typedef typename W::Scalar S;
+  static const uint8_t kShape = SlotShape::kNone;
+  S k1;  // N s/m
+  S k2;  // N s^2/m^2
 
-  static void apply(W& world, typename W::ForceSlot& slot, S) {
-    const DragParams<S> drag = slot.params.drag;
-    if (slot.a != kAllIndex) {
-      add(world.particleAt(slot.a), drag);
-      return;
-    }
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      typename W::ParticleType& p = world.particleAt(i);
-      if (p.inUse()) add(p, drag);
-    }
+  static DragForce make(S k1, S k2) {
+    DragForce drag;
+    drag.k1 = k1;
+    drag.k2 = k2;
+    return drag;
   }
 
- private:
-  static void add(typename W::ParticleType& p, const DragParams<S>& drag) {
-    if (p.isStatic()) return;
+  void apply(Particle<S, Dim>& p, S) const {
     S speedSquared = p.velocity.magnitudeSquared();
     if (speedSquared == S()) return;
     // F = -v * (k1 + k2 |v|), so |F| = k1 |v| + k2 |v|^2.
-    S coefficient = drag.k1;
-    if (drag.k2 != S()) coefficient += drag.k2 * sqrt(speedSquared);
+    S coefficient = k1;
+    if (k2 != S()) coefficient += k2 * sqrt(speedSquared);
     p.acceleration.addScaled(p.velocity, -(coefficient * p.inverseMass));
   }
 };

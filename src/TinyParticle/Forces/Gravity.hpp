@@ -10,36 +10,42 @@
 
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
-#include "../World/Handle.hpp"
+#include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
 
 namespace tinyparticle {
 
+// A generator class (Core/Generator.hpp) with a runner of its own (run()):
+// for every particle it touches none.
 template <typename S, uint8_t Dim>
-struct GravityParams {
-  Vec<S, Dim> acceleration;  // g times the multiplier, m/s^2
-};
-
-template <class W>
 struct GravityForce {
-  typedef typename W::Scalar S;
+  static const uint8_t kShape = SlotShape::kNone;
+  Vec<S, Dim> acceleration;  // g times the multiplier, m/s^2
 
-  static void apply(W& world, typename W::ForceSlot& slot, S) {
-    const typename W::Vec& g = slot.params.gravity.acceleration;
-    if (slot.a != kAllIndex) {
-      add(world.particleAt(slot.a), g);
-    } else {
-      world.addUniformAcceleration(g);
+  static GravityForce make(const Vec<S, Dim>& acceleration) {
+    GravityForce gravity;
+    gravity.acceleration = acceleration;
+    return gravity;
+  }
+
+  // An immovable particle gets nothing: its accumulator must stay zero for
+  // the resolver's resting-contact test (the runner skips it). Zero
+  // components (gravity is usually along y only) are skipped: a compare is
+  // cheaper than an add.
+  void apply(Particle<S, Dim>& p, S) const {
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (!detail::isZero(acceleration[k])) p.acceleration[k] += acceleration[k];
     }
   }
 
- private:
-  // An immovable particle gets nothing: its accumulator must stay zero for
-  // the resolver's resting-contact test. Zero components (gravity is
-  // usually along y only) are skipped: a compare is cheaper than an add.
-  static void add(typename W::ParticleType& p, const typename W::Vec& g) {
-    if (p.isStatic()) return;
-    for (uint8_t k = 0; k < W::kDimensions; ++k) {
-      if (!detail::isZero(g[k])) p.acceleration[k] += g[k];
+  template <class W>
+  static void run(W& world, typename W::ForceSlot& slot, S dt) {
+    const GravityForce& g = InSlot::of<GravityForce>(slot);
+    if (slot.a != kAllIndex) {
+      Particle<S, Dim>& p = WorldAccess::particle(world, slot.a);
+      if (!p.isStatic()) g.apply(p, dt);
+    } else {
+      WorldAccess::addUniformAcceleration(world, g.acceleration);
     }
   }
 };

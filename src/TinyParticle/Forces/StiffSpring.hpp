@@ -35,16 +35,12 @@
 
 #include <stdint.h>
 
+#include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
 #include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
 
 namespace tinyparticle {
-
-template <typename S, uint8_t Dim>
-struct StiffSpringParams {
-  Vec<S, Dim> anchor;
-  S positionGain;  // A, 1/s^2 (negative)
-  S velocityGain;  // B, 1/s
-};
 
 namespace detail {
 
@@ -111,17 +107,48 @@ inline void stiffSpringGains(float w2, float c, float h, float* gainA,
 
 }  // namespace detail
 
-template <class W>
+// A generator class (Core/Generator.hpp), run for one particle.
+template <typename S, uint8_t Dim>
 struct StiffSpringForce {
-  typedef typename W::Scalar S;
+  static const uint8_t kShape = SlotShape::kAnchorable;
+  Vec<S, Dim> anchor;
+  S positionGain;  // A, 1/s^2 (negative)
+  S velocityGain;  // B, 1/s
 
-  static void apply(W& world, typename W::ForceSlot& slot, S) {
-    const StiffSpringParams<S, W::kDimensions>& spring = slot.params.stiffSpring;
-    typename W::ParticleType& p = world.particleAt(slot.a);
-    if (p.isStatic()) return;
-    p.acceleration.addScaled(p.position - spring.anchor, spring.positionGain);
-    if (spring.velocityGain != S()) {  // 0 when undamped
-      p.acceleration.addScaled(p.velocity, spring.velocityGain);
+  // The gains for stiffness k (N/m, >= 0) and damping (N s/m, >= 0) on a
+  // particle of the given inverse mass, exact for steps of dt (> 0),
+  // computed in float on every platform. False (nothing set) when an
+  // argument is out of range, when k or damping did not fit the scalar (it
+  // arrives saturated: S::largest()), or when a gain would not fit it.
+  static bool make(StiffSpringForce& out, const Vec<S, Dim>& anchor, S k,
+                   S damping, S dt, S inverseMass) {
+    const float limit = S::largest().toFloat();
+    float gainA = 0.0f, gainB = 0.0f;
+    if (detail::isPositive(dt) && !detail::isNegative(k) &&
+        !detail::isNegative(damping) && k < S::largest() &&
+        damping < S::largest()) {
+      const float inverse = inverseMass.toFloat();
+      detail::stiffSpringGains(k.toFloat() * inverse,
+                               damping.toFloat() * inverse, dt.toFloat(),
+                               &gainA, &gainB);
+    } else {
+      return false;
+    }
+    // Within (-limit, limit), which also leaves out inf and NaN.
+    if (!(gainA > -limit && gainA < limit && gainB > -limit &&
+          gainB < limit)) {
+      return false;
+    }
+    out.anchor = anchor;
+    out.positionGain = S(gainA);
+    out.velocityGain = S(gainB);
+    return true;
+  }
+
+  void apply(Particle<S, Dim>& p, S) const {
+    p.acceleration.addScaled(p.position - anchor, positionGain);
+    if (velocityGain != S()) {  // 0 when undamped
+      p.acceleration.addScaled(p.velocity, velocityGain);
     }
   }
 };

@@ -21,7 +21,8 @@
 #include <stdint.h>
 
 #include "../Debug/Profile.hpp"
-#include "../World/Handle.hpp"
+#include "../Core/Access.hpp"
+#include "../Core/Generator.hpp"
 
 namespace tinyparticle {
 
@@ -98,20 +99,15 @@ class AsciiRenderer {
     const Units low = Units((kRows - 1 - row) * kSub);
     const Units high = Units(low + kSub);
 
+    // Each generator's kind tells how it is drawn (Core/Generator.hpp).
     for (uint8_t i = 0; i < W::kForceCapacity; ++i) {
-      const typename W::ForceSlot& f = world.forceAt(i);
-      if (f.inUse() && f.a < kAnchorIndex && f.b != kNoIndex) {
-        drawLink(world, f.a, f.b, f.params.spring.anchor, low, high, text);
-      }
+      drawSlot(world, WorldAccess::force(world, i), low, high, text);
     }
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      const typename W::ConstraintSlot& k = world.constraintAt(i);
-      if (k.inUse() && k.a < kAnchorIndex && k.b != kNoIndex) {
-        drawLink(world, k.a, k.b, k.params.link.anchor, low, high, text);
-      }
+      drawSlot(world, WorldAccess::constraint(world, i), low, high, text);
     }
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      const typename W::ParticleType& p = world.particleAt(i);
+      const typename W::ParticleType& p = WorldAccess::particle(world, i);
       if (p.inUse()) drawParticle(p, low, text);
     }
   }
@@ -197,10 +193,23 @@ class AsciiRenderer {
     }
   }
 
-  void drawLink(const W& world, uint8_t a, uint8_t b, const V& anchor,
-                Units low, Units high, char* text) const {
-    const V& pa = world.particleAt(a).position;
-    const V& pb = b == kAnchorIndex ? anchor : world.particleAt(b).position;
+  // A spring, stiff spring, rod or cable: a line from particle a to b or
+  // to its anchor.
+  template <class Slot>
+  void drawSlot(const W& world, const Slot& slot, Units low, Units high,
+                char* text) const {
+    const uint8_t shape = Slot::Params::shapeOf(slot.kind);
+    if (shape == SlotShape::kNone) return;
+    const V* end = slot.b == kAnchorIndex
+                       ? slot.params.template anchorOf<V>(slot.kind)
+                       : &WorldAccess::particle(world, slot.b).position;
+    if (end == nullptr) return;
+    drawLink(WorldAccess::particle(world, slot.a).position, *end, low, high,
+             text);
+  }
+
+  void drawLink(const V& pa, const V& pb, Units low, Units high,
+                char* text) const {
     Units x0 = toUnitsX(pa.x), y0 = toUnitsY(pa.y);
     Units x1 = toUnitsX(pb.x), y1 = toUnitsY(pb.y);
     if (y0 > y1) {  // y0 <= y1 from here on

@@ -11,7 +11,7 @@
 
 #include <stdint.h>
 
-#include "../World/Handle.hpp"
+#include "../Core/Handle.hpp"
 #include "../World/World.hpp"
 #include "Random.hpp"
 

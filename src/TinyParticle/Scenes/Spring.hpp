@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "../World/Handle.hpp"
+#include "../Core/Handle.hpp"
 #include "../World/World.hpp"
 
 namespace tinyparticle {

@@ -1,16 +1,22 @@
-// The uniform slots of the force and constraint pools, and the pool storage.
+// The uniform slots of the force and constraint pools, the list of the
+// built-in generators' parameter classes, and the pool storage.
 //
-// A slot is a function pointer plus the particles it acts on plus a union of
-// the parameters of every generator type. The pointer is set by the World
-// function that adds the generator, so a generator type that a sketch never
-// adds is never instantiated and its code is not linked. A null pointer marks
-// a free slot.
+// A slot is a function pointer (the runner of one generator class,
+// Core/Generator.hpp), the particles it acts on, a kind and a union of the
+// parameter classes. The pointer is set by the World function that adds the
+// generator, so a generator that a sketch never adds is never instantiated
+// and its code is not linked. A null pointer (kind 0) marks a free slot.
+//
+// Registering a built-in generator is one line: its class in the list
+// below (and World's add function that places it). A sketch's generator
+// needs none: its slot holds a SketchGenerator, a pointer to it.
 #pragma once
 
 #include <stdint.h>
 
 #include "../Contacts/Link.hpp"
 #include "../Contacts/Plane.hpp"
+#include "../Core/Generator.hpp"
 #include "../Forces/Buoyancy.hpp"
 #include "../Forces/CustomForce.hpp"
 #include "../Forces/Drag.hpp"
@@ -21,49 +27,80 @@
 
 namespace tinyparticle {
 
+// Particle collisions keep no parameters: the class only gives them their
+// kind (the resolver asks World::isCollision()).
+struct CollisionParams {
+  static const uint8_t kShape = SlotShape::kNone;
+};
+
+template <typename S, uint8_t Dim>
+struct ForceParamList {
+  typedef ParamUnion<GravityForce<S, Dim>,
+                     DragForce<S, Dim>,
+                     SpringForce<S, Dim, false>,
+                     SpringForce<S, Dim, true>,
+                     AnchoredSpringForce<S, Dim, false>,
+                     AnchoredSpringForce<S, Dim, true>,
+                     BuoyancyForce<S, Dim>,
+                     StiffSpringForce<S, Dim>,
+                     CustomForce<S, Dim>,
+                     SketchGenerator>
+      Type;
+};
+
+template <typename S, uint8_t Dim>
+struct ConstraintParamList {
+  typedef ParamUnion<LinkParams<S, Dim>,  // rods and cables
+                     PlaneConstraint<S, Dim>,
+                     CollisionParams,
+                     SketchGenerator>
+      Type;
+};
+
 // W is the world type; it is incomplete here, which is fine for a pointer.
 template <typename S, uint8_t Dim, class W>
 struct ForceSlot {
   typedef void (*Apply)(W& world, ForceSlot& slot, S dt);
+  typedef typename ForceParamList<S, Dim>::Type Params;
 
   Apply apply;         // null: the slot is free
   uint8_t a;           // particle index, or kAllIndex
   uint8_t b;           // second particle, kAnchorIndex, or kNoIndex
   uint8_t generation;  // bumped when the slot is freed
-  union Params {
-    constexpr Params() : none(0) {}
-    uint8_t none;
-    GravityParams<S, Dim> gravity;
-    DragParams<S> drag;
-    SpringParams<S, Dim> spring;  // springs and bungees
-    BuoyancyParams<S> buoyancy;
-    StiffSpringParams<S, Dim> stiffSpring;
-    CustomForceParams<S, Dim> custom;
-  } params;
+  uint8_t kind;        // KindOf<class, Params>::value; 0 when free
+  Params params;
 
-  constexpr ForceSlot() : apply(nullptr), a(0), b(0), generation(0), params() {}
+  constexpr ForceSlot()
+      : apply(nullptr), a(0), b(0), generation(0), kind(0), params() {}
   bool inUse() const { return apply != nullptr; }
+  // Whether it holds a generator of class C.
+  template <class C>
+  bool holds() const {
+    return kind == KindOf<C, Params>::value;
+  }
 };
 
 template <typename S, uint8_t Dim, class W>
 struct ConstraintSlot {
   typedef void (*Generate)(W& world, ConstraintSlot& slot, uint8_t index);
+  typedef typename ConstraintParamList<S, Dim>::Type Params;
 
   Generate generate;   // null: the slot is free
   uint8_t a;           // particle index, or kAllIndex
   uint8_t b;           // second particle, kAnchorIndex, or kNoIndex
   uint8_t generation;  // bumped when the slot is freed
+  uint8_t kind;        // KindOf<class, Params>::value; 0 when free
   S restitution;       // of the contacts it makes
-  union Params {
-    constexpr Params() : none(0) {}
-    uint8_t none;
-    LinkParams<S, Dim> link;  // rods and cables
-    PlaneParams<S, Dim> plane;
-  } params;
+  Params params;
 
   constexpr ConstraintSlot()
-      : generate(nullptr), a(0), b(0), generation(0), restitution(), params() {}
+      : generate(nullptr), a(0), b(0), generation(0), kind(0), restitution(),
+        params() {}
   bool inUse() const { return generate != nullptr; }
+  template <class C>
+  bool holds() const {
+    return kind == KindOf<C, Params>::value;
+  }
 };
 
 namespace detail {

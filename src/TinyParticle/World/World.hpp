@@ -48,9 +48,8 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
-#include "Handle.hpp"
-#include "Margins.hpp"
-#include "Particle.hpp"
+#include "../Core/Handle.hpp"
+#include "../Core/Particle.hpp"
 #include "RodState.hpp"
 #include "Sleep.hpp"
 #include "Slots.hpp"
@@ -112,6 +111,10 @@ class World
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
   typedef detail::SleepState<bool (*)(World&), (kConstraints > 0)> SleepStore;
+  typedef GravityForce<S, Dim> GravityType;
+  // Generators and the renderer reach the slots and the step's uniform
+  // acceleration through it (Core/Access.hpp).
+  friend class WorldAccess;
 
  public:
   constexpr World()
@@ -228,53 +231,47 @@ class World
   // Gravity for every particle: standard gravity, or any acceleration.
   ForceId addGravity() { return addGravity(standardGravity()); }
   ForceId addGravity(const Vec& acceleration) {
-    ForceId id;
-    ForceSlot* f = newForce(id, kAllIndex, kNoIndex);
-    if (f == nullptr) return id;
-    GravityParams<S, Dim> params;
-    params.acceleration = acceleration;
-    f->params.gravity = params;
-    f->apply = &GravityForce<World>::apply;
-    return id;
+    return placeForce(kAllIndex, kNoIndex, GravityType::make(acceleration),
+                      &GravityType::template run<World>);
   }
   // Gravity for one particle, standard gravity times `multiplier`.
   ForceId addGravity(ParticleId target, S multiplier = S(1)) {
-    ForceId id;
-    if (!check(target)) return id;
-    ForceSlot* f = newForce(id, target.index, kNoIndex);
-    if (f == nullptr) return id;
-    GravityParams<S, Dim> params;
-    params.acceleration = standardGravity() * multiplier;
-    f->params.gravity = params;
-    f->apply = &GravityForce<World>::apply;
-    return id;
+    if (!check(target)) return ForceId();
+    return placeForce(target.index, kNoIndex,
+                      GravityType::make(standardGravity() * multiplier),
+                      &GravityType::template run<World>);
   }
 
   // Drag k1 |v| + k2 |v|^2 against the velocity, on every particle or one.
-  ForceId addDrag(S k1, S k2) { return addDragFor(kAllIndex, k1, k2); }
+  ForceId addDrag(S k1, S k2) {
+    return placeForceOnEach(DragForce<S, Dim>::make(k1, k2));
+  }
   ForceId addDrag(ParticleId target, S k1, S k2) {
     if (!check(target)) return ForceId();
-    return addDragFor(target.index, k1, k2);
+    return placeForceOn(target.index, kNoIndex,
+                        DragForce<S, Dim>::make(k1, k2));
   }
 
   // A spring of stiffness k (N/m) and rest length (m) between two particles.
   ForceId addSpring(ParticleId a, ParticleId b, S k, S restLength) {
-    return addSpringKind(a, b, k, restLength,
-                         &SpringForce<World, false, false>::apply);
+    return placePairForce(a, b, SpringForce<S, Dim>::make(k, restLength));
   }
   // A spring from a particle to a fixed point.
   ForceId addSpring(ParticleId a, const Vec& anchor, S k, S restLength) {
-    return addAnchoredSpringKind(a, anchor, k, restLength,
-                                 &SpringForce<World, true, false>::apply);
+    if (!check(a)) return ForceId();
+    return placeForceOn(a.index, kAnchorIndex,
+                        AnchoredSpringForce<S, Dim>::make(anchor, k, restLength));
   }
   // A bungee: a spring that only pulls, and only beyond its rest length.
   ForceId addBungee(ParticleId a, ParticleId b, S k, S restLength) {
-    return addSpringKind(a, b, k, restLength,
-                         &SpringForce<World, false, true>::apply);
+    return placePairForce(a, b,
+                          SpringForce<S, Dim, true>::make(k, restLength));
   }
   ForceId addBungee(ParticleId a, const Vec& anchor, S k, S restLength) {
-    return addAnchoredSpringKind(a, anchor, k, restLength,
-                                 &SpringForce<World, true, true>::apply);
+    if (!check(a)) return ForceId();
+    return placeForceOn(
+        a.index, kAnchorIndex,
+        AnchoredSpringForce<S, Dim, true>::make(anchor, k, restLength));
   }
 
   // Buoyancy under a water surface at height `surface` (m, along y), for
@@ -283,12 +280,22 @@ class World
   // one. The full force density * volume * 9.81 is computed once, in float
   // (on every platform).
   ForceId addBuoyancy(S surface, S maxDepth, S volume, S density) {
-    return addBuoyancyFor(kAllIndex, surface, maxDepth, volume, density);
+    BuoyancyForce<S, Dim> buoyancy;
+    if (!BuoyancyForce<S, Dim>::make(buoyancy, surface, maxDepth, volume,
+                                     density)) {
+      return refused();
+    }
+    return placeForceOnEach(buoyancy);
   }
   ForceId addBuoyancy(ParticleId target, S surface, S maxDepth, S volume,
                       S density) {
     if (!check(target)) return ForceId();
-    return addBuoyancyFor(target.index, surface, maxDepth, volume, density);
+    BuoyancyForce<S, Dim> buoyancy;
+    if (!BuoyancyForce<S, Dim>::make(buoyancy, surface, maxDepth, volume,
+                                     density)) {
+      return refused();
+    }
+    return placeForceOn(target.index, kNoIndex, buoyancy);
   }
 
   // A stiff spring (Forces/StiffSpring.hpp) from a particle to an anchor:
@@ -300,59 +307,67 @@ class World
   // fit it (in Q16.16, k/m beyond about 32000 at dt = 1/256 s).
   ForceId addStiffSpring(ParticleId target, const Vec& anchor, S k, S damping,
                          S dt) {
-    ForceId id;
-    if (!check(target)) return id;
-    const float limit = S::largest().toFloat();
-    float gainA = 0.0f, gainB = 0.0f;
-    if (detail::isPositive(dt) && !detail::isNegative(k) &&
-        !detail::isNegative(damping) && k < S::largest() &&
-        damping < S::largest()) {
-      const float inverseMass =
-          particleAt(target.index).inverseMass.toFloat();
-      detail::stiffSpringGains(k.toFloat() * inverseMass,
-                               damping.toFloat() * inverseMass, dt.toFloat(),
-                               &gainA, &gainB);
-    } else {
-      gainA = limit;  // refused below
-    }
-    // Within (-limit, limit), which also leaves out inf and NaN.
-    if (!(gainA > -limit && gainA < limit && gainB > -limit &&
-          gainB < limit)) {
-      mError |= WorldError::kBadArgument;
+    if (!check(target)) return ForceId();
+    StiffSpringForce<S, Dim> spring;
+    if (!StiffSpringForce<S, Dim>::make(
+            spring, anchor, k, damping, dt,
+            particleAt(target.index).inverseMass)) {
       TINYPARTICLE_DEBUG_PRINT("stiff spring does not fit the scalar");
-      return id;
+      return refused();
     }
-    ForceSlot* f = newForce(id, target.index, kAnchorIndex);
-    if (f == nullptr) return id;
-    StiffSpringParams<S, Dim> params;
-    params.anchor = anchor;
-    params.positionGain = S(gainA);
-    params.velocityGain = S(gainB);
-    f->params.stiffSpring = params;
-    f->apply = &StiffSpringForce<World>::apply;
-    return id;
+    return placeForceOn(target.index, kAnchorIndex, spring);
   }
 
   // A force (N) read each step from a vector the sketch owns.
   ForceId addCustomForce(ParticleId target, const Vec* force) {
-    ForceId id;
-    if (!check(target)) return id;
+    if (!check(target)) return ForceId();
     if (force == nullptr) {
       mError |= WorldError::kBadArgument;
-      return id;
+      return ForceId();
     }
-    ForceSlot* f = newForce(id, target.index, kNoIndex);
-    if (f == nullptr) return id;
-    CustomForceParams<S, Dim> params;
-    params.force = force;
-    f->params.custom = params;
-    f->apply = &CustomForce<World>::apply;
-    return id;
+    return placeForce(target.index, kNoIndex, CustomForce<S, Dim>::make(force),
+                      &CustomForce<S, Dim>::template run<World>);
   }
 
-  // The slot, to read or change its parameters; null if stale.
+  // A force generator of the sketch's own (extras/doc/design.md, "Adding a
+  // generator"): an object of any class with
+  //   void apply(ParticleType& p, Scalar dt)
+  // that adds to p.acceleration (p.addForce(f)), called each step for every
+  // movable particle, or for one; or, added for a pair, with
+  //   void apply(ParticleType& a, ParticleType& b, Scalar dt).
+  // The object stays in the sketch and must outlive the generator; the
+  // sketch may change its fields at any time. Errors as for the others.
+  template <class G>
+  ForceId addForce(G& generator) {
+    return placeSketchForce<EachForceRunner<World, G, InSketch> >(
+        kAllIndex, kNoIndex, &generator);
+  }
+  template <class G>
+  ForceId addForce(G& generator, ParticleId target) {
+    if (!check(target)) return ForceId();
+    return placeSketchForce<ForceRunner<World, G, InSketch> >(
+        target.index, kNoIndex, &generator);
+  }
+  template <class G>
+  ForceId addForce(G& generator, ParticleId a, ParticleId b) {
+    if (!checkPair(a, b)) return ForceId();
+    return placeSketchForce<PairForceRunner<World, G, InSketch> >(
+        a.index, b.index, &generator);
+  }
+
+  // The slot, to tell whether the handle is live; null if stale.
   ForceSlot* force(ForceId id) {
     return id.index < kForces ? liveSlot(forceAt(id.index), id) : nullptr;
+  }
+  // The parameters of a built-in generator of class C (SpringForce<S, Dim>,
+  // StiffSpringForce<S, Dim>...), to read or change them; null if the
+  // handle is stale or the slot holds another class.
+  template <class C>
+  C* forceParams(ForceId id) {
+    ForceSlot* f = force(id);
+    return f != nullptr && f->template holds<C>()
+               ? &f->params.template as<C>()
+               : nullptr;
   }
 
   bool removeForce(ForceId id) { return removeSlot(force(id)); }
@@ -383,10 +398,11 @@ class World
                            &CableConstraint<World, true>::generate);
   }
 
-  // Changes a rod's or a cable's length. False if the id is not one.
+  // Changes a rod's or a cable's length (m, > 0). False if the id is not
+  // one (kStaleHandle) or the length is not positive (kBadArgument).
   bool setLength(ConstraintId id, S length) {
-    ConstraintSlot* c = constraint(id);
-    if (c == nullptr || c->a >= kAnchorIndex || c->b == kNoIndex) {
+    LinkParamsType* link = constraintParams<LinkParamsType>(id);
+    if (link == nullptr) {
       mError |= WorldError::kStaleHandle;
       return false;
     }
@@ -394,8 +410,8 @@ class World
       mError |= WorldError::kBadArgument;
       return false;
     }
-    c->params.link.length = length;
-    c->params.link.inverseLength = S(1) / length;
+    link->length = length;
+    link->inverseLength = S(1) / length;
     return true;
   }
 
@@ -415,15 +431,10 @@ class World
         return addAxisPlane(k, false, -offset, restitution);
       }
     }
-    ConstraintId id;
-    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
-    if (c == nullptr) return id;
-    PlaneParams<S, Dim> params;
-    params.normal = unit;
-    params.offset = offset;
-    c->params.plane = params;
-    c->generate = &PlaneConstraint<World>::generate;
-    return id;
+    return placeConstraint(
+        kAllIndex, kNoIndex, restitution,
+        PlaneConstraint<S, Dim>::make(unit, offset),
+        &EachContactRunner<World, PlaneConstraint<S, Dim>, InSlot>::generate);
   }
 
   // The walls of the box low <= x <= high (2 Dim axis-aligned planes, facing
@@ -441,16 +452,58 @@ class World
   // Collisions between all pairs of colliding particles.
   ConstraintId addCollisions(S restitution) {
     requireContacts();
-    ConstraintId id;
-    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
-    if (c == nullptr) return id;
-    c->generate = &CollisionConstraint<World>::generate;
-    return id;
+    return placeConstraint(kAllIndex, kNoIndex, restitution,
+                           CollisionParams(),
+                           &CollisionConstraint<World>::generate);
   }
 
+  // A contact generator of the sketch's own (extras/doc/design.md, "Adding
+  // a generator"): an object of any class with
+  //   bool contact(const ParticleType& p, Vec& normal, Scalar& penetration)
+  // called each step for every colliding, movable, awake particle, or for
+  // one; or, added for a pair, with
+  //   bool contact(const ParticleType& a, const ParticleType& b,
+  //                Vec& normal, Scalar& penetration).
+  // It returns true to make a contact: the unit normal pushes p (or a) out,
+  // the penetration (m) is positive while the constraint is violated; the
+  // resolver then bounces it with `restitution`. The object stays in the
+  // sketch and must outlive the generator. Errors as for the others.
+  template <class G>
+  ConstraintId addConstraint(G& generator, S restitution) {
+    requireContacts();
+    return placeSketchConstraint<EachContactRunner<World, G, InSketch> >(
+        kAllIndex, kNoIndex, restitution, &generator);
+  }
+  template <class G>
+  ConstraintId addConstraint(G& generator, ParticleId target, S restitution) {
+    requireContacts();
+    if (!check(target)) return ConstraintId();
+    return placeSketchConstraint<ContactRunner<World, G, InSketch> >(
+        target.index, kNoIndex, restitution, &generator);
+  }
+  template <class G>
+  ConstraintId addConstraint(G& generator, ParticleId a, ParticleId b,
+                             S restitution) {
+    requireContacts();
+    if (!checkPair(a, b)) return ConstraintId();
+    return placeSketchConstraint<PairContactRunner<World, G, InSketch> >(
+        a.index, b.index, restitution, &generator);
+  }
+
+  // The slot, to tell whether the handle is live; null if stale.
   ConstraintSlot* constraint(ConstraintId id) {
     return id.index < kConstraints ? liveSlot(constraintAt(id.index), id)
                                    : nullptr;
+  }
+  // The parameters of a built-in constraint of class C (LinkParamsType for
+  // rods and cables...); null if the handle is stale or the slot holds
+  // another class.
+  template <class C>
+  C* constraintParams(ConstraintId id) {
+    ConstraintSlot* c = constraint(id);
+    return c != nullptr && c->template holds<C>()
+               ? &c->params.template as<C>()
+               : nullptr;
   }
 
   bool removeConstraint(ConstraintId id) {
@@ -619,8 +672,6 @@ class World
   const ParticleType& particleAt(uint8_t i) const {
     return ParticlePool::at(i);
   }
-  ForceSlot& forceAt(uint8_t i) { return ForcePool::at(i); }
-  const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
   ConstraintSlot& constraintAt(uint8_t i) { return ConstraintPool::at(i); }
   const ConstraintSlot& constraintAt(uint8_t i) const {
     return ConstraintPool::at(i);
@@ -633,8 +684,8 @@ class World
   // a coarse scalar), so that rounding cannot leave a resting particle a
   // hair above its support, free to fall and hop for a step. The resolver
   // treats depths and speeds below the same margins as resolved.
-  static S contactMargin() { return detail::Margins<S>::depth(); }
-  static S speedMargin() { return detail::Margins<S>::speed(); }
+  static S contactMargin() { return ScalarTraits<S>::depthMargin(); }
+  static S speedMargin() { return ScalarTraits<S>::speedMargin(); }
 
   // The acceleration that every movable particle gets in this step besides
   // its accumulator (gravity added for all particles), m/s^2.
@@ -644,8 +695,6 @@ class World
     return UniformStore::uniformComponent(component);
   }
 
-  // For force generators: adds to the uniform acceleration of this step.
-  void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
 
   // dot(acceleration of p in this step, direction): its accumulator plus
   // the uniform acceleration; 0 for an immovable particle. (Contact normals
@@ -708,7 +757,7 @@ class World
   // True if that constraint is the particle collisions (contacts between two
   // particles from a generator that acts on all of them).
   bool isCollision(uint8_t constraintIndex) const {
-    return constraintAt(constraintIndex).a == kAllIndex;
+    return constraintAt(constraintIndex).template holds<CollisionParams>();
   }
 
   // Records a contact for this step, unless it is neither penetrating nor
@@ -954,6 +1003,12 @@ class World
     if (!detail::isZero(velocity)) position += byDt(velocity);
   }
 
+  // For WorldAccess (force slots: the renderer; the uniform acceleration:
+  // gravity on every particle).
+  ForceSlot& forceAt(uint8_t i) { return ForcePool::at(i); }
+  const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
+  void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
+
   ForceSlot* newForce(ForceId& id, uint8_t a, uint8_t b) {
     static_assert(kForces > 0,
                   "this World has no force slot: World<S, Dim, particles, "
@@ -1001,69 +1056,81 @@ class World
     return nullptr;
   }
 
-  ForceId addDragFor(uint8_t target, S k1, S k2) {
+  // Places a built-in generator of class G (its parameters in the slot)
+  // with its runner; a and b as in the slot.
+  template <class G>
+  ForceId placeForce(uint8_t a, uint8_t b, const G& generator,
+                     typename ForceSlot::Apply apply) {
     ForceId id;
-    ForceSlot* f = newForce(id, target, kNoIndex);
+    ForceSlot* f = newForce(id, a, b);
     if (f == nullptr) return id;
-    DragParams<S> params;
-    params.k1 = k1;
-    params.k2 = k2;
-    f->params.drag = params;
-    f->apply = &DragForce<World>::apply;
+    f->params.template as<G>() = generator;
+    f->kind = KindOf<G, typename ForceSlot::Params>::value;
+    f->apply = apply;
     return id;
   }
+  // ... run for particle a by the ForceRunner (b: kNoIndex, or
+  // kAnchorIndex for an anchorable class with its anchor).
+  template <class G>
+  ForceId placeForceOn(uint8_t a, uint8_t b, const G& generator) {
+    return placeForce(a, b, generator,
+                      &ForceRunner<World, G, InSlot>::apply);
+  }
+  // ... run for every movable particle by the EachForceRunner.
+  template <class G>
+  ForceId placeForceOnEach(const G& generator) {
+    return placeForce(kAllIndex, kNoIndex, generator,
+                      &EachForceRunner<World, G, InSlot>::apply);
+  }
+  // ... run for the pair a, b by the PairForceRunner.
+  template <class G>
+  ForceId placePairForce(ParticleId a, ParticleId b, const G& generator) {
+    if (!checkPair(a, b)) return ForceId();
+    return placeForce(a.index, b.index, generator,
+                      &PairForceRunner<World, G, InSlot>::apply);
+  }
+  // A sketch's generator: the slot holds a pointer to it.
+  template <class Runner, class G>
+  ForceId placeSketchForce(uint8_t a, uint8_t b, G* generator) {
+    SketchGenerator sketch;
+    sketch.object = generator;
+    return placeForce(a, b, sketch, &Runner::apply);
+  }
 
-  ForceId addSpringKind(ParticleId a, ParticleId b, S k, S restLength,
-                        typename ForceSlot::Apply apply) {
-    ForceId id;
-    if (!check(a) || !check(b)) return id;
+  template <class G>
+  ConstraintId placeConstraint(uint8_t a, uint8_t b, S restitution,
+                               const G& generator,
+                               typename ConstraintSlot::Generate generate) {
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, a, b, restitution);
+    if (c == nullptr) return id;
+    c->params.template as<G>() = generator;
+    c->kind = KindOf<G, typename ConstraintSlot::Params>::value;
+    c->generate = generate;
+    return id;
+  }
+  template <class Runner, class G>
+  ConstraintId placeSketchConstraint(uint8_t a, uint8_t b, S restitution,
+                                     G* generator) {
+    SketchGenerator sketch;
+    sketch.object = generator;
+    return placeConstraint(a, b, restitution, sketch, &Runner::generate);
+  }
+
+  // Both live, and two different particles.
+  bool checkPair(ParticleId a, ParticleId b) {
+    if (!check(a) || !check(b)) return false;
     if (a == b) {
       mError |= WorldError::kBadArgument;
-      return id;
+      return false;
     }
-    ForceSlot* f = newForce(id, a.index, b.index);
-    if (f == nullptr) return id;
-    SpringParams<S, Dim> params;
-    params.stiffness = k;
-    params.restLength = restLength;
-    f->params.spring = params;
-    f->apply = apply;
-    return id;
+    return true;
   }
 
-  ForceId addAnchoredSpringKind(ParticleId a, const Vec& anchor, S k,
-                                S restLength, typename ForceSlot::Apply apply) {
-    ForceId id;
-    if (!check(a)) return id;
-    ForceSlot* f = newForce(id, a.index, kAnchorIndex);
-    if (f == nullptr) return id;
-    SpringParams<S, Dim> params;
-    params.anchor = anchor;
-    params.stiffness = k;
-    params.restLength = restLength;
-    f->params.spring = params;
-    f->apply = apply;
-    return id;
-  }
-
-  ForceId addBuoyancyFor(uint8_t target, S surface, S maxDepth, S volume,
-                         S density) {
-    ForceId id;
-    if (maxDepth <= S()) {
-      mError |= WorldError::kBadArgument;
-      return id;
-    }
-    ForceSlot* f = newForce(id, target, kNoIndex);
-    if (f == nullptr) return id;
-    BuoyancyParams<S> params;
-    params.surface = surface;
-    params.maxDepth = maxDepth;
-    // In float on every platform, so that the bits are the same everywhere.
-    params.invTwiceDepth = S(0.5f / maxDepth.toFloat());
-    params.fullForce = S(density.toFloat() * volume.toFloat() * 9.81f);
-    f->params.buoyancy = params;
-    f->apply = &BuoyancyForce<World>::apply;
-    return id;
+  // A generator whose parameters are out of range: an invalid id.
+  ForceId refused() {
+    mError |= WorldError::kBadArgument;
+    return ForceId();
   }
 
   // A rod between two particles just added (or an invalid id): its
@@ -1109,48 +1176,30 @@ class World
 
   ConstraintId addLink(ParticleId a, ParticleId b, S length, S restitution,
                        typename ConstraintSlot::Generate generate) {
-    ConstraintId id;
-    if (!check(a) || !check(b)) return id;
-    if (a == b) {
-      mError |= WorldError::kBadArgument;
-      return id;
-    }
-    ConstraintSlot* c = newConstraint(id, a.index, b.index, restitution);
-    if (c == nullptr) return id;
-    LinkParams<S, Dim> params;
-    params.length = length;
-    c->params.link = params;
-    c->generate = generate;
-    return id;
+    if (!checkPair(a, b)) return ConstraintId();
+    LinkParamsType link = LinkParamsType();
+    link.length = length;
+    return placeConstraint(a.index, b.index, restitution, link, generate);
   }
 
   ConstraintId addAnchoredLink(ParticleId a, const Vec& anchor, S length,
                                S restitution,
                                typename ConstraintSlot::Generate generate) {
-    ConstraintId id;
-    if (!check(a)) return id;
-    ConstraintSlot* c = newConstraint(id, a.index, kAnchorIndex, restitution);
-    if (c == nullptr) return id;
-    LinkParams<S, Dim> params;
-    params.anchor = anchor;
-    params.length = length;
-    c->params.link = params;
-    c->generate = generate;
-    return id;
+    if (!check(a)) return ConstraintId();
+    LinkParamsType link = LinkParamsType();
+    link.anchor = anchor;
+    link.length = length;
+    return placeConstraint(a.index, kAnchorIndex, restitution, link,
+                           generate);
   }
 
   // The plane x[axis] >= offset (positive) or x[axis] <= offset (negative).
   ConstraintId addAxisPlane(uint8_t axis, bool positive, S offset,
                             S restitution) {
-    ConstraintId id;
-    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
-    if (c == nullptr) return id;
-    PlaneParams<S, Dim> params;
-    params.normal[axis] = positive ? S(1) : S(-1);
-    params.offset = positive ? offset : -offset;
-    c->params.plane = params;
-    c->generate = &PlaneConstraint<World>::generateAxis;
-    return id;
+    return placeConstraint(
+        kAllIndex, kNoIndex, restitution,
+        PlaneConstraint<S, Dim>::alongAxis(axis, positive, offset),
+        &PlaneConstraint<S, Dim>::template generateAxis<World>);
   }
 
   // The step's contacts: every generator once, from an empty pool.
