@@ -55,10 +55,14 @@
 // multiplies per step in 2D, no division and no square root while it
 // turns slowly.
 //
-// Cost per rod of a chain and step, Q16.16 on AVR: about 30 multiplies and
-// two divisions (one per solve: the further passes of a solve reuse its
-// factors), no square root while the rod turns slowly (the new direction
-// is normalised by one Newton step from 1 / L).
+// Cost per rod of a chain and step, Q16.16 on AVR: about 45 multiplies and
+// one division, no square root while the rod turns slowly (the new
+// direction is normalised by one Newton step from 1 / L). The matrix
+// depends on the directions and masses only, so it is factored once per
+// step: the velocity solve factors it for the directions it leaves, the
+// next step's position solve has those same directions, and its further
+// passes reuse the factors too (kept per world type, see Factor). The
+// measured cycles are in extras/benchmarks/scenes.csv (scene chain).
 #pragma once
 
 #include <stdint.h>
@@ -633,7 +637,9 @@ struct RodSolver {
     }
   }
   static void shift(V& x, const V& u, S speed, const Pass& pass) {
-    x.addScaled(u, pass.byDt(speed));
+    // Mostly less than half a unit of a fixed-point scalar: nothing moves.
+    const S distance = pass.byDt(speed);
+    if (!detail::isZero(distance)) x.addScaled(u, distance);
   }
 
   // How rod `other`'s impulse changes rod r's stretching speed, per unit
@@ -697,7 +703,6 @@ struct RodSolver {
       // Down the chain: eliminate the coupling with the rod before.
       uint8_t last = head;
       S previousRight = S(), previousMove = S();
-
       for (uint8_t i = head; i != kNoIndex;
            i = world.constraintAt(i).params.link.next) {
         const Slot& s = world.constraintAt(i);
