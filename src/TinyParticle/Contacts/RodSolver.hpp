@@ -141,8 +141,7 @@ struct RodSolver {
     if (n == 1 || coupled) {
       for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
         if (isRodAt(world, i)) {
-          move(world, world.constraintAt(i), sFactors[i], rows[i].moved,
-               pass);
+          move(world, world.constraintAt(i), rows[i].moved, pass);
         }
       }
     }
@@ -609,37 +608,32 @@ struct RodSolver {
     return speed;
   }
 
-  // Applies rod s's impulse mu (per unit mass along u) to the velocities,
-  // with the inverse masses of its factors (f).
-  static void apply(W& world, const Slot& s, const Factor& f, S mu) {
+  // Applies rod s's impulse mu (per unit mass along u) to the velocities.
+  static void apply(W& world, const Slot& s, S mu, const Pass&) {
     if (detail::isZero(mu)) return;
     const V& u = s.params.link.direction;
-    if (!detail::isZero(f.inverseMassA)) {
-      world.particleAt(s.a).velocity.addScaled(u, f.inverseMassA * mu);
-    }
-    if (!detail::isZero(f.inverseMassB)) {
-      world.particleAt(s.b).velocity.addScaled(u, -(f.inverseMassB * mu));
+    P& a = world.particleAt(s.a);
+    if (!a.isStatic()) a.velocity.addScaled(u, a.inverseMass * mu);
+    if (s.b != kAnchorIndex) {
+      P& b = world.particleAt(s.b);
+      if (!b.isStatic()) b.velocity.addScaled(u, -(b.inverseMass * mu));
     }
   }
 
   // Moves rod s's ends along u by dt times `speed` per unit mass: the
   // first pass's correction of the length error, without a velocity.
-  static void move(W& world, const Slot& s, const Factor& f, S speed,
-                   const Pass& pass) {
+  static void move(W& world, const Slot& s, S speed, const Pass& pass) {
     if (detail::isZero(speed)) return;
     const V& u = s.params.link.direction;
-    if (!detail::isZero(f.inverseMassA)) {
-      shift(world.particleAt(s.a).position, u, f.inverseMassA * speed, pass);
-    }
-    if (!detail::isZero(f.inverseMassB)) {
-      shift(world.particleAt(s.b).position, u, -(f.inverseMassB * speed),
-            pass);
+    P& a = world.particleAt(s.a);
+    if (!a.isStatic()) shift(a.position, u, a.inverseMass * speed, pass);
+    if (s.b != kAnchorIndex) {
+      P& b = world.particleAt(s.b);
+      if (!b.isStatic()) shift(b.position, u, -(b.inverseMass * speed), pass);
     }
   }
   static void shift(V& x, const V& u, S speed, const Pass& pass) {
-    // Mostly less than half a unit of a fixed-point scalar: nothing moves.
-    const S distance = pass.byDt(speed);
-    if (!detail::isZero(distance)) x.addScaled(u, distance);
+    x.addScaled(u, pass.byDt(speed));
   }
 
   // How rod `other`'s impulse changes rod r's stretching speed, per unit
@@ -736,7 +730,7 @@ struct RodSolver {
           rows[i].moved = muMove;
         }
         nextMultiplier = sFactors[i].multiplier;
-        apply(world, world.constraintAt(i), sFactors[i], mu);
+        apply(world, world.constraintAt(i), mu, pass);
       }
     }
     pass.factored = true;
