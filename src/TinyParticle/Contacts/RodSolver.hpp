@@ -56,10 +56,14 @@
 // turns slowly. A world whose rods can never share a particle links that
 // solve alone, without this file's chains.
 //
-// Cost per rod of a chain and step, Q16.16 on AVR: about 30 multiplies and
-// two divisions (one per solve: the further passes of a solve reuse its
-// factors), no square root while the rod turns slowly (the new direction
-// is normalised by one Newton step from 1 / L).
+// Cost per rod of a chain and step, Q16.16 on AVR: about 45 multiplies and
+// one division, no square root while the rod turns slowly (the new
+// direction is normalised by one Newton step from 1 / L). The matrix
+// depends on the directions and masses only, so it is factored once per
+// step: the velocity solve factors it for the directions it leaves, the
+// next step's position solve has those same directions, and its further
+// passes reuse the factors too (kept per world type, see Factor). The
+// measured cycles are in extras/benchmarks/scenes.csv (scene chain).
 #pragma once
 
 #include <stdint.h>
@@ -120,6 +124,8 @@ struct RodSolver {
     Pass pass(byDt, invDt);
     pass.coupled = coupled;
     Row rows[W::kConstraintCapacity > 0 ? W::kConstraintCapacity : 1];
+    // The directions are the ones the last velocity solve factored.
+    pass.factored = factorsHold(world);
     // The position solve is exact to second order in each rod's turn: a
     // rod that turned by more than 1/16 rad in the step, or coupled chains,
     // take further passes (Newton's iterations, or Gauss-Seidel) until
@@ -157,6 +163,7 @@ struct RodSolver {
       sweep(world, rows, pass);
       if (!coupled) break;
     }
+    sFactoredWorld = &world;
   }
 
   // Within this of their length (m) the rods count as held: 61 um, or
@@ -168,13 +175,45 @@ struct RodSolver {
  private:
   friend struct LoneRods<W>;  // shares the step equations and Pass
 
+  // A row of the solve, for one step.
   struct Row {
-    S multiplier;    // the elimination's factor for this row
-    S inversePivot;  // 1 / the row's pivot, after the elimination
     S y;             // the row's right side, eliminated and divided
     S yMove;         // the same for the length errors (position solve)
     S moved;         // the first pass's position impulse, applied after all
   };
+
+  // A row's factors, kept from step to step: the velocity solve factors
+  // the matrix of the directions it leaves, and the next step's position
+  // solve has the same directions. They hold while the rods, the world
+  // and the masses of the rods' ends stay the same (factorsHold()). One
+  // set per world type: a second world of the type factors afresh.
+  struct Factor {
+    S multiplier;    // the elimination's factor for this row
+    S inversePivot;  // 1 / the row's pivot, after the elimination
+    S inverseMassA;  // the masses it was factored with (0: immovable)
+    S inverseMassB;
+    S sharedBefore;  // sharedMass() with the rod before it in its chain
+  };
+  static Factor sFactors[W::kConstraintCapacity > 0 ? W::kConstraintCapacity
+                                                    : 1];
+  static const W* sFactoredWorld;  // whose directions sFactors has, or null
+
+  // The factors of the last velocity solve serve this world's position
+  // solve: the same world, no rod added or removed since (findChains()
+  // forgets them), and every end's inverse mass as it was.
+  static bool factorsHold(W& world) {
+    if (sFactoredWorld != &world) return false;
+    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+      if (!isRodAt(world, i)) continue;
+      const Slot& s = world.constraintAt(i);
+      const Factor& f = sFactors[i];
+      if (!(inverseMassOf(world, s.a) == f.inverseMassA) ||
+          !(inverseMassOf(world, s.b) == f.inverseMassB)) {
+        return false;
+      }
+    }
+    return true;
+  }
 
   struct Pass {
     Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
@@ -234,6 +273,7 @@ struct RodSolver {
   // Chains start at a rod with an end that no other rod shares, so that
   // a chain is as long as it can be; rods left over lie on loops.
   static void findChains(W& world) {
+    sFactoredWorld = nullptr;
     bool coupled = false;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
@@ -509,41 +549,59 @@ struct RodSolver {
     x.addScaled(u, pass.byDt(speed));
   }
 
-  // The coupling C_ij of rod r with the rod before it in its chain.
-  static S coupling(W& world, const Slot& r, const Slot& prev) {
+  // How rod `other`'s impulse changes rod r's stretching speed, per unit
+  // of impulse and along other's direction: +-w_p for the particle p
+  // they share (0 for none).
+  static S sharedMass(W& world, const Slot& r, const Slot& other) {
     S c = S();
-    const S cosine = dot(linkOf(r).direction, linkOf(prev).direction);
     const uint8_t ends[2] = {r.a, r.b};
     for (uint8_t k = 0; k < 2; ++k) {
       const uint8_t p = ends[k];
-      if (p >= W::kParticleCapacity || (prev.a != p && prev.b != p)) continue;
+      if (p >= W::kParticleCapacity || (other.a != p && other.b != p)) {
+        continue;
+      }
       const S w = inverseMassOf(world, p);
       // + when p is the same end (a or b) of both rods, - otherwise.
-      c += pushesA(r, p) == pushesA(prev, p) ? w : -w;
+      c += pushesA(r, p) == pushesA(other, p) ? w : -w;
     }
-    return detail::isZero(c) ? c : c * cosine;
+    return c;
   }
 
   // The elimination's factor and inverse pivot of row i (rod s), the row
   // before it factored already.
-  static void factor(W& world, const Slot& s, uint8_t i, Row* rows) {
-    S pivot = inverseMassOf(world, s.a) + inverseMassOf(world, s.b);
-    S multiplier = S();
+  // The masses are read afresh in the position solve (when the factors of
+  // the last step did not hold), and kept for the velocity solve.
+  static void factor(W& world, const Slot& s, uint8_t i, bool fresh) {
+    Factor& f = sFactors[i];
     const uint8_t prev = linkOf(s).prev;
-    if (prev != kNoIndex) {
-      const S c = coupling(world, s, world.constraintAt(prev));
+    if (fresh) {
+      f.inverseMassA = inverseMassOf(world, s.a);
+      f.inverseMassB = inverseMassOf(world, s.b);
+      f.sharedBefore = prev != kNoIndex
+                           ? sharedMass(world, s, world.constraintAt(prev))
+                           : S();
+    }
+    S pivot = f.inverseMassA + f.inverseMassB;
+    S multiplier = S();
+    if (!detail::isZero(f.sharedBefore)) {
+      const S c = f.sharedBefore *
+                  dot(linkOf(s).direction,
+                      linkOf(world.constraintAt(prev)).direction);
       if (!detail::isZero(c)) {
-        multiplier = c * rows[prev].inversePivot;
+        multiplier = c * sFactors[prev].inversePivot;
         pivot -= multiplier * c;
       }
     }
-    rows[i].multiplier = multiplier;
+    f.multiplier = multiplier;
     // Both ends immovable: no impulse.
-    rows[i].inversePivot = detail::isPositive(pivot) ? S(1) / pivot : S();
+    f.inversePivot = detail::isPositive(pivot) ? S(1) / pivot : S();
   }
 
   // One pass over all chains.
   static void sweep(W& world, Row* rows, Pass& pass) {
+    // The length errors are solved for in the first pass of the positions
+    // only (their impulses are applied from it alone).
+    const bool moves = pass.positions && pass.first;
     for (uint8_t head = 0; head < W::kConstraintCapacity; ++head) {
       if (!isRodAt(world, head) ||
           linkOf(world.constraintAt(head)).prev != kNoIndex) {
@@ -560,17 +618,18 @@ struct RodSolver {
         if (!detail::isZero(move)) move *= pass.invDt;  // a speed
         // The matrix depends on the directions and masses only: factored
         // in the first pass of each solve, reused by the further passes.
-        if (!pass.factored) factor(world, s, i, rows);
-        const S multiplier = rows[i].multiplier;
-        if (!detail::isZero(multiplier)) {
-          right -= multiplier * previousRight;
-          move -= multiplier * previousMove;
-        }
-        const S inversePivot = rows[i].inversePivot;
+        if (!pass.factored) factor(world, s, i, pass.positions);
+        const Factor& f = sFactors[i];
+        const S multiplier = f.multiplier;
+        if (!detail::isZero(multiplier)) right -= multiplier * previousRight;
+        const S inversePivot = f.inversePivot;
         rows[i].y = right * inversePivot;
-        rows[i].yMove = move * inversePivot;
         previousRight = right;
-        previousMove = move;
+        if (moves) {
+          if (!detail::isZero(multiplier)) move -= multiplier * previousMove;
+          rows[i].yMove = move * inversePivot;
+          previousMove = move;
+        }
         last = i;
       }
       // Back up the chain: mu_i = y_i - m_(i+1) mu_(i+1), applied at once.
@@ -579,14 +638,22 @@ struct RodSolver {
       for (uint8_t i = last; i != kNoIndex;
            i = linkOf(world.constraintAt(i)).prev) {
         mu = rows[i].y - nextMultiplier * mu;
-        muMove = rows[i].yMove - nextMultiplier * muMove;
-        nextMultiplier = rows[i].multiplier;
-        if (pass.first) rows[i].moved = muMove;
+        if (moves) {
+          muMove = rows[i].yMove - nextMultiplier * muMove;
+          rows[i].moved = muMove;
+        }
+        nextMultiplier = sFactors[i].multiplier;
         apply(world, world.constraintAt(i), mu, pass);
       }
     }
     pass.factored = true;
   }
 };
+
+template <class W>
+typename RodSolver<W>::Factor RodSolver<W>::sFactors[
+    W::kConstraintCapacity > 0 ? W::kConstraintCapacity : 1];
+template <class W>
+const W* RodSolver<W>::sFactoredWorld = nullptr;
 
 }  // namespace tinyparticle
