@@ -226,8 +226,8 @@ class Tracker {
 
   void update(const W& world) {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      const typename W::ConstraintSlot& c = world.constraintAt(i);
-      if (!c.inUse() || !world.isRod(c)) continue;
+      const typename W::ConstraintSlot& c = WorldAccess::constraint(world, i);
+      if (!c.inUse() || !WorldAccess::isRod(world, c)) continue;
       const typename W::LinkParamsType& link =
           c.params.template as<typename W::LinkParamsType>();
       const typename W::ParticleType& a = world.particleAt(c.a);

@@ -84,7 +84,7 @@ Run Run::of(S dt, uint16_t steps) {
     }
   }
   run.error = gOne.error();
-  run.lone = (gOne.rodState() & OneSlot::kRodsLone) != 0;
+  run.lone = (tinyparticle::WorldAccess::rodState(gOne) & OneSlot::kRodsLone) != 0;
   const float mx = ::fabsf(momentumX(gOne) - px);
   const float my = ::fabsf(momentumY(gOne) - py);
   run.momentum = mx > my ? mx : my;

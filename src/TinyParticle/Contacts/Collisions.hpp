@@ -43,6 +43,7 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Core/Handle.hpp"
+#include "../Core/Access.hpp"
 
 namespace tinyparticle {
 
@@ -79,7 +80,7 @@ struct CollisionConstraint {
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
-    if (isTooFast(world)) world.raiseError(WorldError::kTunnelling);
+    if (isTooFast(world)) WorldAccess::raiseError(world, WorldError::kTunnelling);
     // Keep the new order for the next step: the colliding particles
     // sorted, then the others (any order will do for them).
     if (count > 0) {
@@ -115,7 +116,7 @@ struct CollisionConstraint {
       if (speed > fastest) fastest = speed;
       if (p->radius < smallest) smallest = p->radius;
     }
-    return world.stepScaler()(fastest) > smallest;
+    return WorldAccess::stepScaler(world)(fastest) > smallest;
   }
 
   // The pairs of the sorted list. Out of line, so that its frame is small:
@@ -187,7 +188,7 @@ struct CollisionConstraint {
       normal = V();
       normal.y = S(1);  // centres coincide: any direction will do
     }
-    world.addContact(i, j, normal, penetration, source);
+    WorldAccess::addContact(world, i, j, normal, penetration, source);
   }
 };
 

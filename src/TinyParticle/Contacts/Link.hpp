@@ -39,6 +39,7 @@
 #include "../Core/Generator.hpp"
 #include "../Math/ScalarTraits.hpp"
 #include "Resolver.hpp"
+#include "../Core/Access.hpp"
 
 namespace tinyparticle {
 
@@ -94,7 +95,7 @@ struct CableConstraint {
     S separating =
         Resolver<W>::separatingVelocity(world, slot.a, other, normal);
     if (!detail::isNegative(separating)) {
-      world.addContact(slot.a, other, normal, penetration, source);
+      WorldAccess::addContact(world, slot.a, other, normal, penetration, source);
       return;
     }
     // Closing: keep the tangential speed that the turn of the link takes
@@ -110,7 +111,7 @@ struct CableConstraint {
           a.isStatic() ? -movingB->velocity : a.velocity - movingB->velocity;
       v = &relative;
     }
-    const S q = world.stepScaler()(inverse);  // dt / L
+    const S q = WorldAccess::stepScaler(world)(inverse);  // dt / L
     const S h = q * (-separating - detail::half(v->magnitudeSquared() * q));
     if (ScalarTraits<S>::kCoarse &&
         fabs(h) < ScalarTraits<S>::smallestFactor()) {
@@ -125,7 +126,7 @@ struct CableConstraint {
         push(a, *movingB, change);
       }
     }
-    world.recordContact(slot.a, other, normal, penetration, separating,
+    WorldAccess::recordContact(world, slot.a, other, normal, penetration, separating,
                         source);
   }
 

@@ -43,6 +43,7 @@
 #include "../Math/Zero.hpp"
 #include "../Core/Handle.hpp"
 #include "RodSolver.hpp"
+#include "../Core/Access.hpp"
 
 namespace tinyparticle {
 
@@ -61,17 +62,17 @@ struct LoneRods {
   // the code for two movable ends is not linked.
   template <bool kTwoMovable>
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
-    if (world.rodState() & W::kRodsChanged) world.setRodState(W::kRodsLone);
-    solveAll<kTwoMovable>(world, byDt, world.inverseDt(dt));
+    if (WorldAccess::rodState(world) & W::kRodsChanged) WorldAccess::setRodState(world, W::kRodsLone);
+    solveAll<kTwoMovable>(world, byDt, WorldAccess::inverseDt(world, dt));
   }
 
   // Whether rod slot `rod` may join a world solved here: its particle a is
   // on no other rod.
   static bool isAlone(W& world, uint8_t rod) {
-    const uint8_t p = world.constraintAt(rod).a;
+    const uint8_t p = WorldAccess::constraint(world, rod).a;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (i == rod || !isRodAt(world, i)) continue;
-      const Slot& s = world.constraintAt(i);
+      const Slot& s = WorldAccess::constraint(world, i);
       if (s.a == p || s.b == p) return false;
     }
     return true;
@@ -83,7 +84,7 @@ struct LoneRods {
   static bool allLone(W& world) {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
-      const Slot& s = world.constraintAt(i);
+      const Slot& s = WorldAccess::constraint(world, i);
       if (isImmovable(world, s.a) == isImmovable(world, s.b)) return false;
     }
     return true;
@@ -97,22 +98,22 @@ struct LoneRods {
     pass.unit = false;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (isRodAt(world, i)) {
-        shake<kTwoMovable>(world, world.constraintAt(i), pass);
+        shake<kTwoMovable>(world, WorldAccess::constraint(world, i), pass);
       }
     }
     // After a fast turn, unit directions (see above).
     const bool unit = pass.turned;
-    world.movePositions(byDt);
+    WorldAccess::movePositions(world, byDt);
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (isRodAt(world, i)) {
-        rattle<kTwoMovable>(world, world.constraintAt(i), unit);
+        rattle<kTwoMovable>(world, WorldAccess::constraint(world, i), unit);
       }
     }
   }
 
  private:
   static bool isRodAt(W& world, uint8_t i) {
-    return world.isRod(world.constraintAt(i));
+    return WorldAccess::isRod(world, WorldAccess::constraint(world, i));
   }
   static bool isImmovable(W& world, uint8_t p) {
     return p >= W::kParticleCapacity || world.particleAt(p).isStatic();

@@ -17,6 +17,7 @@
 #include "../Core/Generator.hpp"
 #include "../Core/Particle.hpp"
 #include "../Math/ScalarTraits.hpp"
+#include "../Core/Access.hpp"
 
 namespace tinyparticle {
 
@@ -124,7 +125,7 @@ struct PlaneConstraint {
   // and the acceleration along the normal are that coordinate of the
   // velocity and of the acceleration, with the normal's sign (exactly what
   // the dot products give); the sign does not matter for the acceleration,
-  // only whether it is zero (W::isIdle()).
+  // only whether it is zero (WorldAccess::isIdle<W>()).
   template <class W>
   TINYPARTICLE_NOINLINE static void touch(W& world, const Vec<S, Dim>& normal,
                                           S Vec<S, Dim>::*along,
@@ -134,9 +135,9 @@ struct PlaneConstraint {
     const S velocity = p.velocity.*along;
     const S separating = positive ? velocity : -velocity;
     const S acceleration =
-        p.acceleration.*along + world.uniformComponent(along);
-    if (W::isIdle(penetration, separating, acceleration, S())) return;
-    world.recordContact(i, kNoIndex, normal, penetration, separating, source);
+        p.acceleration.*along + WorldAccess::uniformComponent(world, along);
+    if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) return;
+    WorldAccess::recordContact(world, i, kNoIndex, normal, penetration, separating, source);
   }
 
   static bool isTarget(const Particle<S, Dim>& p) {

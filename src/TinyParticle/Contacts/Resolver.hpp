@@ -39,6 +39,7 @@
 #include "../Math/Zero.hpp"
 #include "../Core/Handle.hpp"
 #include "Contact.hpp"
+#include "../Core/Access.hpp"
 
 namespace tinyparticle {
 
@@ -54,7 +55,7 @@ struct Resolver {
   static uint8_t resolve(W& world, const Scaler<S>& byDt, uint8_t cap) {
     const uint8_t count = world.contactCount();
     if (count == 0) return 0;
-    C* const contacts = &world.contactAt(0);
+    C* const contacts = &WorldAccess::contact(world, 0);
     // Below these a contact counts as resolved (see worstOf()).
     const S closing = -W::speedMargin();
     const S deep = W::contactMargin();
@@ -253,15 +254,15 @@ struct Resolver {
     const S separating = contact.separatingVelocity;
     S deltaV = S();
     if (detail::isNegative(separating)) {
-      const S restitution = world.restitutionOf(contact.source);
-      const bool stacked = movesB && movesA && world.isCollision(contact.source);
+      const S restitution = WorldAccess::restitutionOf(world, contact.source);
+      const bool stacked = movesB && movesA && WorldAccess::isCollision(world, contact.source);
       S target = S();
       deltaV = -separating;
       if (!detail::isZero(restitution) || stacked) {
         // The closing velocity that this step's accelerations can have
         // built, along the normal.
-        const S alongA = world.accelerationAlong(a, contact.normal);
-        const S alongB = movesB ? world.accelerationAlong(*b, contact.normal)
+        const S alongA = WorldAccess::accelerationAlong(world, a, contact.normal);
+        const S alongB = movesB ? WorldAccess::accelerationAlong(world, *b, contact.normal)
                                 : S();
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {

@@ -72,6 +72,7 @@
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
 #include "../Core/Handle.hpp"
+#include "../Core/Access.hpp"
 
 namespace tinyparticle {
 
@@ -114,13 +115,13 @@ struct RodSolver {
 
   // The step's two solves (World::step calls them after integrating).
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
-    if (world.rodState() & W::kRodsChanged) findChains(world);
-    const S invDt = world.inverseDt(dt);
-    if ((world.rodState() & W::kRodsLone) && LoneRods<W>::allLone(world)) {
+    if (WorldAccess::rodState(world) & W::kRodsChanged) findChains(world);
+    const S invDt = WorldAccess::inverseDt(world, dt);
+    if ((WorldAccess::rodState(world) & W::kRodsLone) && LoneRods<W>::allLone(world)) {
       LoneRods<W>::template solveAll<false>(world, byDt, invDt);
       return;
     }
-    const bool coupled = (world.rodState() & W::kRodsCoupled) != 0;
+    const bool coupled = (WorldAccess::rodState(world) & W::kRodsCoupled) != 0;
     Pass pass(byDt, invDt);
     pass.coupled = coupled;
     Row rows[W::kConstraintCapacity > 0 ? W::kConstraintCapacity : 1];
@@ -144,18 +145,18 @@ struct RodSolver {
     // Rounding leaves a few units of a fixed-point scalar; a rod off by a
     // millimetre after all the passes is one that cannot be held.
     if (n == kMaxPasses && pass.worst > S(1.0 / 1024)) {
-      world.raiseError(WorldError::kRodsUnsatisfied);
+      WorldAccess::raiseError(world, WorldError::kRodsUnsatisfied);
     }
     // The first pass's moves of the ends, unless further passes along
     // chains took the errors into the speed (a fast rod's exact length).
     if (n == 1 || coupled) {
       for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
         if (isRodAt(world, i)) {
-          move(world, world.constraintAt(i), rows[i].moved, pass);
+          move(world, WorldAccess::constraint(world, i), rows[i].moved, pass);
         }
       }
     }
-    world.movePositions(pass.byDt);
+    WorldAccess::movePositions(world, pass.byDt);
     newDirections(world);
     pass.positions = false;
     pass.factored = false;
@@ -205,7 +206,7 @@ struct RodSolver {
     if (sFactoredWorld != &world) return false;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
-      const Slot& s = world.constraintAt(i);
+      const Slot& s = WorldAccess::constraint(world, i);
       const Factor& f = sFactors[i];
       if (!(inverseMassOf(world, s.a) == f.inverseMassA) ||
           !(inverseMassOf(world, s.b) == f.inverseMassB)) {
@@ -231,7 +232,7 @@ struct RodSolver {
   };
 
   static bool isRodAt(W& world, uint8_t i) {
-    return world.isRod(world.constraintAt(i));
+    return WorldAccess::isRod(world, WorldAccess::constraint(world, i));
   }
 
   // The inverse mass of an end (0 for an anchor or a fixed particle).
@@ -252,7 +253,7 @@ struct RodSolver {
     uint8_t n = 0;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
-      const Slot& s = world.constraintAt(i);
+      const Slot& s = WorldAccess::constraint(world, i);
       if (s.a == p) ++n;
       if (s.b == p) ++n;
     }
@@ -263,7 +264,7 @@ struct RodSolver {
   static uint8_t otherRod(W& world, uint8_t rod, uint8_t p) {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (i == rod || !isRodAt(world, i)) continue;
-      const Slot& s = world.constraintAt(i);
+      const Slot& s = WorldAccess::constraint(world, i);
       if (s.a == p || s.b == p) return i;
     }
     return kNoIndex;
@@ -279,7 +280,7 @@ struct RodSolver {
       if (!isRodAt(world, i)) continue;
       linkParamsOf(world, i).next = kNoIndex;
       linkParamsOf(world, i).prev = kAllIndex;  // not placed yet
-      const Slot& s = world.constraintAt(i);
+      const Slot& s = WorldAccess::constraint(world, i);
       if (degree(world, s.a) > 2 || degree(world, s.b) > 2) coupled = true;
     }
     for (uint8_t round = 0; round < 2; ++round) {
@@ -287,7 +288,7 @@ struct RodSolver {
         if (!isRodAt(world, i) || linkParamsOf(world, i).prev != kAllIndex) {
           continue;
         }
-        const Slot& s = world.constraintAt(i);
+        const Slot& s = WorldAccess::constraint(world, i);
         // Enter at an end through which the chain cannot continue.
         uint8_t from;
         if (degree(world, s.a) != 2) {
@@ -305,7 +306,7 @@ struct RodSolver {
         for (;;) {
           linkParamsOf(world, rod).prev = prev;
           if (prev != kNoIndex) linkParamsOf(world, prev).next = rod;
-          const Slot& r = world.constraintAt(rod);
+          const Slot& r = WorldAccess::constraint(world, rod);
           const uint8_t far = r.a == from ? r.b : r.a;
           if (degree(world, far) != 2) break;
           const uint8_t next = otherRod(world, rod, far);
@@ -326,11 +327,11 @@ struct RodSolver {
         state &= uint8_t(~W::kRodsLone);
       }
     }
-    world.setRodState(state);
+    WorldAccess::setRodState(world, state);
   }
 
   static typename W::LinkParamsType& linkParamsOf(W& world, uint8_t i) {
-    return linkOf(world.constraintAt(i));
+    return linkOf(WorldAccess::constraint(world, i));
   }
 
   // ---- The solves ---------------------------------------------------------
@@ -358,7 +359,7 @@ struct RodSolver {
   static void newDirections(W& world) {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
-      Slot& s = world.constraintAt(i);
+      Slot& s = WorldAccess::constraint(world, i);
       setDirection(span(world, s), linkOf(s), true);
     }
   }
@@ -578,7 +579,7 @@ struct RodSolver {
       f.inverseMassA = inverseMassOf(world, s.a);
       f.inverseMassB = inverseMassOf(world, s.b);
       f.sharedBefore = prev != kNoIndex
-                           ? sharedMass(world, s, world.constraintAt(prev))
+                           ? sharedMass(world, s, WorldAccess::constraint(world, prev))
                            : S();
     }
     S pivot = f.inverseMassA + f.inverseMassB;
@@ -586,7 +587,7 @@ struct RodSolver {
     if (!detail::isZero(f.sharedBefore)) {
       const S c = f.sharedBefore *
                   dot(linkOf(s).direction,
-                      linkOf(world.constraintAt(prev)).direction);
+                      linkOf(WorldAccess::constraint(world, prev)).direction);
       if (!detail::isZero(c)) {
         multiplier = c * sFactors[prev].inversePivot;
         pivot -= multiplier * c;
@@ -604,15 +605,15 @@ struct RodSolver {
     const bool moves = pass.positions && pass.first;
     for (uint8_t head = 0; head < W::kConstraintCapacity; ++head) {
       if (!isRodAt(world, head) ||
-          linkOf(world.constraintAt(head)).prev != kNoIndex) {
+          linkOf(WorldAccess::constraint(world, head)).prev != kNoIndex) {
         continue;
       }
       // Down the chain: eliminate the coupling with the rod before.
       uint8_t last = head;
       S previousRight = S(), previousMove = S();
       for (uint8_t i = head; i != kNoIndex;
-           i = linkOf(world.constraintAt(i)).next) {
-        const Slot& s = world.constraintAt(i);
+           i = linkOf(WorldAccess::constraint(world, i)).next) {
+        const Slot& s = WorldAccess::constraint(world, i);
         S move = S();
         S right = rightSide(world, s, pass, move);
         if (!detail::isZero(move)) move *= pass.invDt;  // a speed
@@ -636,14 +637,14 @@ struct RodSolver {
       S mu = S(), muMove = S();
       S nextMultiplier = S();
       for (uint8_t i = last; i != kNoIndex;
-           i = linkOf(world.constraintAt(i)).prev) {
+           i = linkOf(WorldAccess::constraint(world, i)).prev) {
         mu = rows[i].y - nextMultiplier * mu;
         if (moves) {
           muMove = rows[i].yMove - nextMultiplier * muMove;
           rows[i].moved = muMove;
         }
         nextMultiplier = sFactors[i].multiplier;
-        apply(world, world.constraintAt(i), mu, pass);
+        apply(world, WorldAccess::constraint(world, i), mu, pass);
       }
     }
     pass.factored = true;

@@ -11,6 +11,8 @@
 
 #include <stdint.h>
 
+#include "../Math/Scaler.hpp"
+
 namespace tinyparticle {
 
 class WorldAccess {
@@ -29,9 +31,91 @@ class WorldAccess {
     return world.forceAt(i);
   }
   template <class W>
+  static typename W::ConstraintSlot& constraint(W& world, uint8_t i) {
+    return world.constraintAt(i);
+  }
+  template <class W>
   static const typename W::ConstraintSlot& constraint(const W& world,
                                                       uint8_t i) {
     return world.constraintAt(i);
+  }
+  template <class W>
+  static typename W::ContactType& contact(W& world, uint8_t i) {
+    return world.contactAt(i);
+  }
+  template <class W>
+  static const typename W::ContactType& contact(const W& world, uint8_t i) {
+    return world.contactAt(i);
+  }
+  template <class W>
+  static bool isRod(const W& world, const typename W::ConstraintSlot& c) {
+    return world.isRod(c);
+  }
+  template <class W>
+  static bool isCollision(const W& world, uint8_t constraintIndex) {
+    return world.isCollision(constraintIndex);
+  }
+  template <class W>
+  static typename W::Scalar restitutionOf(const W& world,
+                                          uint8_t constraintIndex) {
+    return world.restitutionOf(constraintIndex);
+  }
+  template <class W>
+  static void raiseError(W& world, uint16_t bits) {
+    world.raiseError(bits);
+  }
+
+  // The step in progress: its dt as a multiplier, and the acceleration a
+  // particle gets in it (World::accelerationAlong, uniformComponent).
+  template <class W>
+  static const Scaler<typename W::Scalar>& stepScaler(const W& world) {
+    return world.stepScaler();
+  }
+  template <class W>
+  static typename W::Scalar accelerationAlong(
+      const W& world, const typename W::ParticleType& p,
+      const typename W::Vec& direction) {
+    return world.accelerationAlong(p, direction);
+  }
+  template <class W>
+  static typename W::Scalar uniformComponent(
+      const W& world, typename W::Scalar W::Vec::*component) {
+    return world.uniformComponent(component);
+  }
+
+  // For the rod solvers: their state bits (World::kRods...), dt's inverse,
+  // and the positions' move, which the step leaves to them.
+  template <class W>
+  static uint8_t rodState(const W& world) {
+    return world.rodState();
+  }
+  template <class W>
+  static void setRodState(W& world, uint8_t state) {
+    world.setRodState(state);
+  }
+  template <class W>
+  static typename W::Scalar inverseDt(W& world, typename W::Scalar dt) {
+    return world.inverseDt(dt);
+  }
+  template <class W>
+  static void movePositions(W& world,
+                            const Scaler<typename W::Scalar>& byDt) {
+    world.movePositions(byDt);
+  }
+
+  // For sleeping (World/Sleep.hpp): the steps in a row at rest, and
+  // whether some particles sleep.
+  template <class W>
+  static uint8_t restCount(const W& world) {
+    return world.restCount();
+  }
+  template <class W>
+  static bool hasSleepers(const W& world) {
+    return world.hasSleepers();
+  }
+  template <class W>
+  static void setRest(W& world, uint8_t count, bool sleepers) {
+    world.setRest(count, sleepers);
   }
 
   // For gravity on every particle: adds to this step's uniform acceleration.
@@ -41,12 +125,26 @@ class WorldAccess {
   }
 
   // For contact generators: records a contact for this step (see
-  // World::addContact), made by constraint slot `source`.
+  // World::addContact), made by constraint slot `source`; recordContact()
+  // when the generator has computed the separating velocity and keeps it.
   template <class W>
   static void addContact(W& world, uint8_t a, uint8_t b,
                          const typename W::Vec& normal,
                          typename W::Scalar penetration, uint8_t source) {
     world.addContact(a, b, normal, penetration, source);
+  }
+  template <class W>
+  static void recordContact(W& world, uint8_t a, uint8_t b,
+                            const typename W::Vec& normal,
+                            typename W::Scalar penetration,
+                            typename W::Scalar separating, uint8_t source) {
+    world.recordContact(a, b, normal, penetration, separating, source);
+  }
+  template <class W>
+  static bool isIdle(typename W::Scalar penetration,
+                     typename W::Scalar separating, typename W::Scalar alongA,
+                     typename W::Scalar alongB) {
+    return W::isIdle(penetration, separating, alongA, alongB);
   }
 };
 

@@ -82,7 +82,7 @@ struct LoneRodChecks {
       w.step(dt);
       if (k % every == 0) samples[k / every - 1] = w.particle(end)->position;
     }
-    return (w.rodState() & W::kRodsLone) != 0 && w.error() == 0;
+    return (WorldAccess::rodState(w) & W::kRodsLone) != 0 && w.error() == 0;
   }
 };
 

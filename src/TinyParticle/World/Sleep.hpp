@@ -26,6 +26,7 @@
 #include <stdint.h>
 
 #include "../Math/Zero.hpp"
+#include "../Core/Access.hpp"
 
 namespace tinyparticle {
 namespace detail {
@@ -97,7 +98,7 @@ struct Sleeping {
     // Without sleepers the first particle that moves ends the look (in a
     // busy scene, usually the first one); sleepers are all looked at, for
     // a disturbance.
-    const bool sleepers = world.hasSleepers();
+    const bool sleepers = WorldAccess::hasSleepers(world);
     bool still = true, awake = false;
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       P& p = world.particleAt(i);
@@ -117,13 +118,13 @@ struct Sleeping {
       }
     }
     if (!awake) return sleepers;
-    const uint8_t count = world.restCount();
+    const uint8_t count = WorldAccess::restCount(world);
     if (!still) {
-      world.setRest(0, sleepers);
+      WorldAccess::setRest(world, 0, sleepers);
     } else if (count < kRestSteps) {
-      world.setRest(uint8_t(count + 1), sleepers);
+      WorldAccess::setRest(world, uint8_t(count + 1), sleepers);
     } else {
-      world.setRest(0, true);  // a particle added later counts from zero
+      WorldAccess::setRest(world, 0, true);  // a particle added later counts from zero
       for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
         P& p = world.particleAt(i);
         if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;

@@ -628,13 +628,18 @@ class World
     SleepStore::setSettler(on ? &Sleeping<World>::settle : nullptr);
   }
   bool isSleepingEnabled() const { return SleepStore::settler() != nullptr; }
-  // For Sleeping<World>: the steps in a row that everything was at rest,
-  // and whether some particles sleep (none once all are awake).
+
+ private:
+  // For Sleeping<World> (through WorldAccess): the steps in a row that
+  // everything was at rest, and whether some particles sleep (none once
+  // all are awake).
   uint8_t restCount() const { return SleepStore::restCount(); }
   bool hasSleepers() const { return SleepStore::hasSleepers(); }
   void setRest(uint8_t count, bool sleepers) {
     SleepStore::setRest(count, sleepers);
   }
+
+ public:
   void wakeAll() {
     SleepStore::setRest(0, false);
     for (uint8_t i = 0; i < kParticles; ++i) {
@@ -663,15 +668,18 @@ class World
   // WorldError bits, sticky until clearError().
   uint16_t error() const { return mError; }
   void clearError() { mError = 0; }
-  void raiseError(uint16_t bits) { mError |= bits; }
 
-  // ---- For generators, the renderer and tests ----------------------------
-  // Slot access by index, without checks: index < capacity.
-
+  // A particle by slot index, without checks: index < capacity (for loops
+  // over the pool; handles go through particle(id)).
   ParticleType& particleAt(uint8_t i) { return ParticlePool::at(i); }
   const ParticleType& particleAt(uint8_t i) const {
     return ParticlePool::at(i);
   }
+
+ private:
+  // ---- For generators, solvers and the renderer (Core/Access.hpp) --------
+  // Unchecked; WorldAccess is their one way in.
+  void raiseError(uint16_t bits) { mError |= bits; }
   ConstraintSlot& constraintAt(uint8_t i) { return ConstraintPool::at(i); }
   const ConstraintSlot& constraintAt(uint8_t i) const {
     return ConstraintPool::at(i);
@@ -679,6 +687,7 @@ class World
   ContactType& contactAt(uint8_t i) { return ContactPool::at(i); }
   const ContactType& contactAt(uint8_t i) const { return ContactPool::at(i); }
 
+ public:
   // Contacts are made a little before surfaces touch: planes and collisions
   // report a contact while the gap is at most this (31 um, or four units of
   // a coarse scalar), so that rounding cannot leave a resting particle a
@@ -690,6 +699,7 @@ class World
   // The acceleration that every movable particle gets in this step besides
   // its accumulator (gravity added for all particles), m/s^2.
   Vec uniformAcceleration() const { return UniformStore::uniform(); }
+ private:
   // One component of it (&Vec::x, &Vec::y...), without copying the vector.
   S uniformComponent(S Vec::*component) const {
     return UniformStore::uniformComponent(component);
@@ -744,9 +754,12 @@ class World
   // solver's state (kRodsChanged: rods were added or removed since the
   // chains were found; kRodsCoupled: chains meet, so passes repeat;
   // kRodsLone: every rod is alone).
+ public:
   static const uint8_t kRodsChanged = 1;
   static const uint8_t kRodsCoupled = 2;
   static const uint8_t kRodsLone = 4;
+
+ private:
   bool isRod(const ConstraintSlot& c) const {
     return c.generate == &RodSolver<World>::generate;
   }
