@@ -8,6 +8,7 @@
 // 2 s of motion fails the test. Also the kind tags.
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/GeneratorChecks.hpp>
 
 using aunit::TestRunner;
 
@@ -26,23 +27,6 @@ struct UserDrag {
     p.acceleration.addScaled(p.velocity, -(coefficient * p.inverseMass));
   }
 };
-
-// A half-space dot(normal, x) - r >= offset, as Contacts/Plane.hpp.
-struct UserPlane {
-  V normal;  // unit
-  S offset;
-  bool contact(const Particle<S, 2>& p, V& unit, S& penetration) {
-    penetration = offset + p.radius - dot(normal, p.position);
-    if (!(penetration >= -W::contactMargin())) return false;
-    unit = normal;
-    return true;
-  }
-};
-
-static bool same(const Particle<S, 2>& a, const Particle<S, 2>& b) {
-  return a.position.x == b.position.x && a.position.y == b.position.y &&
-         a.velocity.x == b.velocity.x && a.velocity.y == b.velocity.y;
-}
 
 // Three particles of 0.2, 1 and 3 kg thrown at 4 m/s in different
 // directions under gravity and drag (k1 = 0.3 N s/m, k2 = 0.1 N s^2/m^2),
@@ -66,37 +50,14 @@ static uint16_t dragOnEach(bool& slowed) {
     builtIn.step(S(1.0 / 256));
     user.step(S(1.0 / 256));
     for (uint8_t i = 0; i < 3; ++i) {
-      if (!same(builtIn.particleAt(i), user.particleAt(i))) return n;
+      if (!testing::sameMotion(builtIn.particleAt(i), user.particleAt(i))) {
+        return n;
+      }
     }
   }
   // Without drag it would fall at 19.6 m/s after 2 s; its terminal speed,
   // 0.3 v + 0.1 v^2 = 0.2 * 9.81, is 3.2 m/s.
   slowed = user.particleAt(0).velocity.magnitude() < S(4);
-  return 0;
-}
-
-// A ball dropped onto a floor tilted by 0.3 rad, bouncing (restitution
-// 0.5) and rolling down it: the built-in plane against the sketch's, added
-// for that one particle.
-static uint16_t planeForOne(bool& touched) {
-  W builtIn, user;
-  const V start(0.1, 0.5);
-  ParticleId a = builtIn.addParticle(start, S(1), S(0.05));
-  ParticleId b = user.addParticle(start, S(1), S(0.05));
-  builtIn.addGravity();
-  user.addGravity();
-  V normal(-0.29552, 0.95534);
-  builtIn.addPlane(normal, S(0), S(0.5));
-  normal.normalize();  // as addPlane() does
-  UserPlane plane = {normal, S(0)};
-  if (!user.addConstraint(plane, b, S(0.5)).isValid()) return 0xFFFF;
-  touched = false;
-  for (uint16_t n = 1; n <= 512; ++n) {
-    builtIn.step(S(1.0 / 256));
-    user.step(S(1.0 / 256));
-    if (!same(*builtIn.particle(a), *user.particle(b))) return n;
-    if (user.contactCount() > 0) touched = true;
-  }
   return 0;
 }
 
@@ -108,7 +69,8 @@ test(UserDragSameAsBuiltIn) {
 
 test(UserConstraintForOneSameAsBuiltInPlane) {
   bool touched = false;
-  assertEqual(planeForOne(touched), (uint16_t) 0);
+  assertEqual(testing::tiltedPlaneAgainstBuiltIn<W>(true, touched),
+              (uint16_t) 0);
   assertTrue(touched);
 }
 

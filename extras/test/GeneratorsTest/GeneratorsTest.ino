@@ -11,6 +11,7 @@
 // errors of the calls that add one.
 #include <AUnit.h>
 #include <TinyParticle.h>
+#include <TinyParticle/Testing/GeneratorChecks.hpp>
 
 using aunit::TestRunner;
 
@@ -54,31 +55,10 @@ struct UserSpring {
   }
 };
 
-// A half-space dot(normal, x) - r >= offset, as Contacts/Plane.hpp.
-template <typename S>
-struct UserPlane {
-  Vec2<S> normal;  // unit
-  S offset;
-
-  bool contact(const Particle<S, 2>& p, Vec2<S>& unit, S& penetration) {
-    penetration = offset + p.radius - dot(normal, p.position);
-    if (!(penetration >= -World<S, 2, 2, 2, 2, 4>::contactMargin())) {
-      return false;
-    }
-    unit = normal;
-    return true;
-  }
-};
-
 template <typename S>
 struct Checks {
   typedef World<S, 2, 2, 2, 2, 4> W;
   typedef typename W::Vec V;
-
-  static bool same(const Particle<S, 2>& a, const Particle<S, 2>& b) {
-    return a.position.x == b.position.x && a.position.y == b.position.y &&
-           a.velocity.x == b.velocity.x && a.velocity.y == b.velocity.y;
-  }
 
   // 0.5 kg on a spring (k = 40 N/m, rest 0.3 m) from (0, 1), released from
   // (0.25, 0.6) under gravity, for 2 s at dt = 1/256 s: it swings and
@@ -98,7 +78,9 @@ struct Checks {
     for (uint16_t n = 1; n <= 512; ++n) {
       builtIn.step(S(1.0 / 256));
       user.step(S(1.0 / 256));
-      if (!same(*builtIn.particle(a), *user.particle(b))) return n;
+      if (!testing::sameMotion(*builtIn.particle(a), *user.particle(b))) {
+        return n;
+      }
       if (fabs(user.particle(b)->position.x - start.x) > S(0.2)) moved = true;
     }
     calls = spring.calls;
@@ -125,34 +107,12 @@ struct Checks {
       builtIn.step(S(1.0 / 256));
       user.step(S(1.0 / 256));
       for (uint8_t i = 0; i < 2; ++i) {
-        if (!same(*builtIn.particle(a[i]), *user.particle(b[i]))) return n;
+        if (!testing::sameMotion(*builtIn.particle(a[i]),
+                                 *user.particle(b[i]))) {
+          return n;
+        }
       }
       if (user.particle(b[1])->position.x < S(0.6)) moved = true;
-    }
-    return 0;
-  }
-
-  // A ball dropped onto a floor tilted by 0.3 rad (normal (-sin, cos)),
-  // bouncing with restitution 0.5 and rolling down it: the built-in plane
-  // (any normal) against the sketch's.
-  static uint16_t tiltedPlane(bool& touched) {
-    W builtIn, user;
-    const V start(0.1, 0.5);
-    ParticleId a = builtIn.addParticle(start, S(1), S(0.05));
-    ParticleId b = user.addParticle(start, S(1), S(0.05));
-    builtIn.addGravity();
-    user.addGravity();
-    V normal(-0.29552, 0.95534);
-    builtIn.addPlane(normal, S(0), S(0.5));
-    normal.normalize();  // as addPlane() does
-    UserPlane<S> plane = {normal, S(0)};
-    if (!user.addConstraint(plane, S(0.5)).isValid()) return 0xFFFF;
-    touched = false;
-    for (uint16_t n = 1; n <= 512; ++n) {
-      builtIn.step(S(1.0 / 256));
-      user.step(S(1.0 / 256));
-      if (!same(*builtIn.particle(a), *user.particle(b))) return n;
-      if (user.contactCount() > 0) touched = true;
     }
     return 0;
   }
@@ -174,7 +134,9 @@ test(UserPairForceSameAsBuiltInSpring) {
 
 test(UserConstraintSameAsBuiltInPlane) {
   bool touched = false;
-  assertEqual(Checks<Q16_16>::tiltedPlane(touched), (uint16_t) 0);
+  assertEqual(
+      testing::tiltedPlaneAgainstBuiltIn<Checks<Q16_16>::W>(false, touched),
+      (uint16_t) 0);
   assertTrue(touched);
 }
 

@@ -80,7 +80,9 @@ struct CollisionConstraint {
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
-    if (isTooFast(world)) WorldAccess::raiseError(world, WorldError::kTunnelling);
+    if (isTooFast(world)) {
+      WorldAccess::raiseError(world, WorldError::kTunnelling);
+    }
     // Keep the new order for the next step: the colliding particles
     // sorted, then the others (any order will do for them).
     if (count > 0) {

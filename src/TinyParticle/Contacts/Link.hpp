@@ -95,7 +95,8 @@ struct CableConstraint {
     S separating =
         Resolver<W>::separatingVelocity(world, slot.a, other, normal);
     if (!detail::isNegative(separating)) {
-      WorldAccess::addContact(world, slot.a, other, normal, penetration, source);
+      WorldAccess::addContact(world, slot.a, other, normal, penetration,
+                              source);
       return;
     }
     // Closing: keep the tangential speed that the turn of the link takes
@@ -126,8 +127,8 @@ struct CableConstraint {
         push(a, *movingB, change);
       }
     }
-    WorldAccess::recordContact(world, slot.a, other, normal, penetration, separating,
-                        source);
+    WorldAccess::recordContact(world, slot.a, other, normal, penetration,
+                               separating, source);
   }
 
  private:

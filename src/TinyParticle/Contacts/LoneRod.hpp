@@ -62,7 +62,9 @@ struct LoneRods {
   // the code for two movable ends is not linked.
   template <bool kTwoMovable>
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
-    if (WorldAccess::rodState(world) & W::kRodsChanged) WorldAccess::setRodState(world, W::kRodsLone);
+    if (WorldAccess::rodState(world) & W::kRodsChanged) {
+      WorldAccess::setRodState(world, W::kRodsLone);
+    }
     solveAll<kTwoMovable>(world, byDt, WorldAccess::inverseDt(world, dt));
   }
 

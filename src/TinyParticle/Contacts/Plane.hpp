@@ -137,7 +137,8 @@ struct PlaneConstraint {
     const S acceleration =
         p.acceleration.*along + WorldAccess::uniformComponent(world, along);
     if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) return;
-    WorldAccess::recordContact(world, i, kNoIndex, normal, penetration, separating, source);
+    WorldAccess::recordContact(world, i, kNoIndex, normal, penetration,
+                               separating, source);
   }
 
   static bool isTarget(const Particle<S, Dim>& p) {

@@ -255,15 +255,18 @@ struct Resolver {
     S deltaV = S();
     if (detail::isNegative(separating)) {
       const S restitution = WorldAccess::restitutionOf(world, contact.source);
-      const bool stacked = movesB && movesA && WorldAccess::isCollision(world, contact.source);
+      const bool stacked = movesB && movesA &&
+                           WorldAccess::isCollision(world, contact.source);
       S target = S();
       deltaV = -separating;
       if (!detail::isZero(restitution) || stacked) {
         // The closing velocity that this step's accelerations can have
         // built, along the normal.
-        const S alongA = WorldAccess::accelerationAlong(world, a, contact.normal);
-        const S alongB = movesB ? WorldAccess::accelerationAlong(world, *b, contact.normal)
-                                : S();
+        const S alongA =
+            WorldAccess::accelerationAlong(world, a, contact.normal);
+        const S alongB =
+            movesB ? WorldAccess::accelerationAlong(world, *b, contact.normal)
+                   : S();
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing

@@ -117,7 +117,8 @@ struct RodSolver {
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (WorldAccess::rodState(world) & W::kRodsChanged) findChains(world);
     const S invDt = WorldAccess::inverseDt(world, dt);
-    if ((WorldAccess::rodState(world) & W::kRodsLone) && LoneRods<W>::allLone(world)) {
+    if ((WorldAccess::rodState(world) & W::kRodsLone) &&
+        LoneRods<W>::allLone(world)) {
       LoneRods<W>::template solveAll<false>(world, byDt, invDt);
       return;
     }
