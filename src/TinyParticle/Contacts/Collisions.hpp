@@ -40,11 +40,52 @@
 #include <stdint.h>
 
 #include "../Configuration.hpp"
+#include "../Math/Fixed.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../World/Handle.hpp"
 
 namespace tinyparticle {
+namespace detail {
+
+// |vx| + |vy| (+ |vz|), for the speed limit: in any scalar, a sum that
+// cannot overflow (Sum) and its value as the scalar (toScalar).
+template <typename S>
+struct AxisSpeed {
+  typedef S Sum;
+  static S of(const Vec<S, 2>& v) { return fabs(v.x) + fabs(v.y); }
+  static S of(const Vec<S, 3>& v) {
+    return fabs(v.x) + fabs(v.y) + fabs(v.z);
+  }
+  static S toScalar(S sum) { return sum; }
+};
+
+// Fixed point: the magnitudes of the raw values, unsigned; a sum past the
+// unsigned range is held at its top (3D: three magnitudes of up to 2^31).
+template <uint8_t I, uint8_t F>
+struct AxisSpeed<Fixed<I, F> > {
+  typedef Fixed<I, F> T;
+  typedef typename T::URaw Sum;
+  static Sum of(const Vec<T, 2>& v) {
+    return plus(T::magnitude(v.x.raw()), T::magnitude(v.y.raw()));
+  }
+  static Sum of(const Vec<T, 3>& v) {
+    return plus(plus(T::magnitude(v.x.raw()), T::magnitude(v.y.raw())),
+                T::magnitude(v.z.raw()));
+  }
+  static T toScalar(Sum sum) {
+    return sum > Sum(T::kRawMax) ? T::largest()
+                                 : T::fromRaw(typename T::Raw(sum));
+  }
+
+ private:
+  static Sum plus(Sum a, Sum b) {
+    const Sum sum = Sum(a + b);
+    return sum < a ? Sum(~Sum(0)) : sum;
+  }
+};
+
+}  // namespace detail
 
 template <class W>
 struct CollisionConstraint {
@@ -54,86 +95,100 @@ struct CollisionConstraint {
 
   static void generate(W& world, typename W::ConstraintSlot&, uint8_t source) {
     const uint8_t both = P::kInUse | P::kCollides;
-    const S margin = W::contactMargin();
     // At least one entry: ISO C++ has no zero-size arrays.
     static const uint8_t kSize =
         W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
     uint8_t* order = sortOrder();
 
-    // The colliding particles in last step's order, with the start of
-    // their extent along x, each inserted at its place (insertion sort: a
-    // nearly sorted list costs one compare per particle).
+    // The colliding particles in last step's order, by their centre's x,
+    // each inserted at its place (insertion sort: a nearly sorted list
+    // costs one compare per particle). The centre, not the start of the
+    // extent: the loop then does no arithmetic, and the sweep allows for
+    // the largest radius instead.
     Entry entries[kSize];
     Entry* end = entries;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
       const uint8_t i = order[k];
       const P& p = world.particleAt(i);
       if ((p.flags & both) != both) continue;
-      const S low = p.position.x - (p.radius + margin);
+      const S x = p.position.x;
       Entry* e = end++;
-      while (e != entries && low < e[-1].low) {
+      while (e != entries && x < e[-1].x) {
         *e = e[-1];
         --e;
       }
-      e->low = low;
+      e->x = x;
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
-    if (isTooFast(world)) world.raiseError(WorldError::kTunnelling);
     // Keep the new order for the next step: the colliding particles
     // sorted, then the others (any order will do for them).
     if (count > 0) {
       uint8_t* o = order;
       for (const Entry* e = entries; e != end; ++e) *o++ = e->index;
-      for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-        if ((world.particleAt(i).flags & both) != both) *o++ = i;
+      if (count < W::kParticleCapacity) {
+        for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+          if ((world.particleAt(i).flags & both) != both) *o++ = i;
+        }
       }
     }
-    sweep(world, entries, count, margin, source);
+    const S largest = survey(world);
+    sweep(world, entries, count, largest + W::contactMargin(), source);
   }
 
  private:
   struct Entry {
-    S low;
+    S x;
     uint8_t index;
   };
 
-
-  // The speed limit (top of this file): whether the fastest moving
-  // colliding particle goes farther in this step, counting the axes
-  // together, than the smallest one's radius. Out of line, with a pointer
-  // walk: in the sort loop it cost three times as much (spilled registers).
-  TINYPARTICLE_NOINLINE static bool isTooFast(W& world) {
-    const uint8_t mask = P::kInUse | P::kCollides | P::kStatic | P::kAsleep;
-    const uint8_t moving = P::kInUse | P::kCollides;
-    S fastest = S(), smallest = S::largest();
+  // One look at the colliding particles: the largest radius (returned, for
+  // the sweep), and the speed limit (top of this file): whether the
+  // fastest moving one goes farther in this step, counting the axes
+  // together, than the smallest moving one's radius (then
+  // WorldError::kTunnelling). Out of line, with a pointer walk: in the sort
+  // loop it cost three times as much (spilled registers). The speeds are
+  // summed as AxisSpeed's magnitudes: for fixed point the raw bits,
+  // unsigned, with no saturating arithmetic in the loop.
+  TINYPARTICLE_NOINLINE static S survey(W& world) {
+    typedef detail::AxisSpeed<S> Speed;
+    const uint8_t both = P::kInUse | P::kCollides;
+    typename Speed::Sum fastest = typename Speed::Sum();
+    S smallest = S::largest(), largest = S();
     const P* p = &world.particleAt(0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-      if ((p->flags & mask) != moving) continue;
-      S speed = fabs(p->velocity.x) + fabs(p->velocity.y);
-      if (W::kDimensions == 3) speed += fabs(p->velocity[2]);
+      if ((p->flags & both) != both) continue;
+      if (p->radius > largest) largest = p->radius;
+      if (p->isResting()) continue;  // immovable or asleep
+      const typename Speed::Sum speed = Speed::of(p->velocity);
       if (speed > fastest) fastest = speed;
       if (p->radius < smallest) smallest = p->radius;
     }
-    return world.stepScaler()(fastest) > smallest;
+    if (world.stepScaler()(Speed::toScalar(fastest)) > smallest) {
+      world.raiseError(WorldError::kTunnelling);
+    }
+    return largest;
   }
 
-  // The pairs of the sorted list. Out of line, so that its frame is small:
-  // behind the list's frame, every spilled value would cost more to reach.
+  // The pairs of the sorted list; spread is the largest radius plus the
+  // contact margin. Out of line, so that its frame is small: behind the
+  // list's frame, every spilled value would cost more to reach.
   TINYPARTICLE_NOINLINE static void sweep(W& world, const Entry* entries,
-                                          uint8_t count, S margin,
+                                          uint8_t count, S spread,
                                           uint8_t source) {
+    const S margin = W::contactMargin();
     for (uint8_t m = 0; m + 1 < count; ++m) {
       const uint8_t i = entries[m].index;
       const P& p = world.particleAt(i);
       const S reach = p.radius + margin;
-      const S high = p.position.x + reach;
-      // Every later entry starts at or after this one; those that start
-      // past its end, and all after them, are apart along x.
-      for (uint8_t n = m + 1; n < count && !(high < entries[n].low); ++n) {
+      // Every later entry's centre is at or after this one's; those whose
+      // centre is farther than this radius plus the largest one (and the
+      // margin), and all after them, are apart along x.
+      const S high = entries[m].x + (p.radius + spread);
+      for (uint8_t n = m + 1; n < count && !(high < entries[n].x); ++n) {
         const uint8_t j = entries[n].index;
         const P& q = world.particleAt(j);
-        // Apart along another axis: |d| > r1 + r2 + margin. Tested here,
+        // Apart along an axis: |d| > r1 + r2 + margin. Tested here,
         // before a call: most pairs that overlap along x end here.
         const S outer = reach + q.radius;
         if (fabs(p.position.y - q.position.y) > outer) continue;
@@ -151,7 +206,7 @@ struct CollisionConstraint {
     }
   }
 
-  // The order of the particle slots by the start of their extent along x,
+  // The order of the particle slots by their centre's x,
   // as of the last step: a permutation of 0 .. capacity - 1.
   static uint8_t* sortOrder() {
     static const uint8_t kSize =

@@ -72,7 +72,6 @@ struct PlaneConstraint {
   // no faster on AVR, the walls' data no longer fit in registers.)
   static void generateAxis(W& world, typename W::ConstraintSlot& slot,
                            uint8_t source) {
-    typedef typename W::ParticleType P;
     const V& normal = slot.params.plane.normal;
     const S offset = slot.params.plane.offset;
     uint8_t axis = 0;
@@ -84,31 +83,54 @@ struct PlaneConstraint {
     // With the normal +e: penetration = offset - (x - r), a contact from
     // -margin on, i.e. while x - r <= offset + margin. With -e (offset holds
     // minus the bound): penetration = offset + (x + r), while
-    // x + r >= -(offset + margin). The loops only test; the rare contact is
-    // made out of line, so that the loops keep their values in registers.
+    // x + r >= -(offset + margin). The scan only tests and notes the
+    // particles within reach; their contacts are made after it, out of
+    // line. With no call in it, the scan keeps its values in registers (a
+    // call inside spilled the particle pointer: it cost twice as much).
     const S limit = offset + W::contactMargin();
-    P* p = &world.particleAt(0);
-    if (positive) {
-      for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-        if (!isTarget(*p)) continue;
-        const S side = p->position.*along - p->radius;
-        if (!(side > limit)) {
-          touch(world, normal, along, true, i, offset - side, source);
-        }
-      }
-    } else {
-      const S negativeLimit = -limit;
-      for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-        if (!isTarget(*p)) continue;
-        const S side = p->position.*along + p->radius;
-        if (!(side < negativeLimit)) {
-          touch(world, normal, along, false, i, offset + side, source);
-        }
-      }
+    uint8_t near[kSize];
+    const uint8_t count = positive ? scanBelow(world, along, limit, near)
+                                   : scanAbove(world, along, -limit, near);
+    for (uint8_t k = 0; k < count; ++k) {
+      const uint8_t i = near[k];
+      const P& p = world.particleAt(i);
+      const S side = positive ? p.position.*along - p.radius
+                              : p.position.*along + p.radius;
+      touch(world, normal, along, positive, i,
+            positive ? offset - side : offset + side, source);
     }
   }
 
  private:
+  typedef typename W::ParticleType P;
+  // At least one entry: ISO C++ has no zero-size arrays.
+  static const uint8_t kSize =
+      W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
+
+  // The targets whose coordinate less their radius is at most `limit`
+  // (+e), or whose coordinate plus their radius is at least `limit` (-e),
+  // in slot order, into `near`; returns how many.
+  static uint8_t scanBelow(W& world, S V::*along, S limit, uint8_t* near) {
+    uint8_t* out = near;
+    const P* p = &world.particleAt(0);
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+      if (isTarget(*p) && !(p->position.*along - p->radius > limit)) {
+        *out++ = i;
+      }
+    }
+    return uint8_t(out - near);
+  }
+  static uint8_t scanAbove(W& world, S V::*along, S limit, uint8_t* near) {
+    uint8_t* out = near;
+    const P* p = &world.particleAt(0);
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+      if (isTarget(*p) && !(p->position.*along + p->radius < limit)) {
+        *out++ = i;
+      }
+    }
+    return uint8_t(out - near);
+  }
+
   // A particle within the margin of an axis plane: the separating velocity
   // and the acceleration along the normal are that coordinate of the
   // velocity and of the acceleration, with the normal's sign (exactly what
