@@ -2,11 +2,12 @@
 // collisions of small balls (kinetic energy kept), sixteen elastic balls in
 // a box, a pile at rest (sleeping), a ball dropped on a sleeping pile (it
 // wakes, and reacts as an awake one), tunnelling at and past the speed limit
-// of Contacts/Collisions.hpp, a contact pool too small for a pile, and
-// Newton's cradle.
+// of Contacts/Collisions.hpp, a contact pool too small for a pile,
+// Newton's cradle, and the bouncing balls falling asleep in coarse fixed
+// point.
 //
 // Used by extras/test/ContactsRestTest, ContactsMotionTest and CradleTest (Q16.16)
-// and their Float twins: every scene runs from here, the sketches assert on
+// and their Float twins, and ContactsSleepQ24Test: every scene runs from here, the sketches assert on
 // what it measures. Not included by TinyParticle.h: include
 // <TinyParticle/Testing/ContactChecks.hpp> after it.
 #pragma once
@@ -246,6 +247,51 @@ struct ContactChecks {
       }
     }
     return true;
+  }
+
+  // ---- Sleeping in coarse fixed point -------------------------------------
+
+  struct SettleResult {
+    uint16_t steps;   // steps until every ball slept (0: not within the run)
+    float hanging;    // m, the largest gap under a sleeping ball
+    float deepest;    // m, the deepest overlap once all sleep
+    uint16_t error;   // world.error()
+  };
+
+  // Scenes/BouncingBalls.hpp (16 balls, sleeping on) at 1/256 s for up to
+  // `seconds`, until every ball sleeps. Then, for each ball, the gap to
+  // what holds it up: the floor, or the nearest ball whose centre is
+  // lower; the largest of those gaps, and the deepest overlap.
+  static SettleResult settleBalls(uint8_t seconds) {
+    static BallsWorld<S, 2, 16> w;  // does not fit on the Nano's stack
+    w.clear();
+    buildBouncingBalls(w, 16);
+    SettleResult r = {0, 0, 0, 0};
+    for (uint16_t i = 1; i <= uint16_t(seconds) * 256u; ++i) {
+      w.step(S(1.0 / 256));
+      if (asleepCount(w) == 16) {
+        r.steps = i;
+        break;
+      }
+    }
+    for (uint8_t i = 0; i < 16; ++i) {
+      const typename RowWorld::ParticleType& p = w.particleAt(i);
+      const float x = p.position.x.toFloat(), y = p.position.y.toFloat();
+      const float r1 = p.radius.toFloat();
+      float gap = y - r1;  // above the floor
+      for (uint8_t j = 0; j < 16; ++j) {
+        const typename RowWorld::ParticleType& q = w.particleAt(j);
+        const float qy = q.position.y.toFloat();
+        if (j == i || !(qy < y)) continue;
+        const float dx = x - q.position.x.toFloat(), dy = y - qy;
+        const float g = ::sqrt(dx * dx + dy * dy) - r1 - q.radius.toFloat();
+        if (g < gap) gap = g;
+      }
+      if (gap > r.hanging) r.hanging = gap;
+    }
+    r.deepest = deepestOverlap(w);
+    r.error = w.error();
+    return r;
   }
 
   // ---- Tunnelling ---------------------------------------------------------

@@ -78,7 +78,8 @@ class World
                    const Scaler<S>&, S),
           S, (kConstraints > 0)>,
       private detail::SleepState<
-          bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&),
+          bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
+                   S),
           (kConstraints > 0)> {
   static_assert(IsScalar<S>::value, TINYPARTICLE_SCALAR_MESSAGE);
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
@@ -110,7 +111,8 @@ class World
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
-  typedef detail::SleepState<bool (*)(World&), (kConstraints > 0)> SleepStore;
+  typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
+      SleepStore;
 
  public:
   constexpr World()
@@ -482,7 +484,7 @@ class World
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
-    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this)) {
+    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, dt)) {
       mContactCount = 0;
       mStats = StepStats();
       TINYPARTICLE_PROFILE_END(kProfileStep);
