@@ -88,14 +88,23 @@ struct PlaneConstraint {
     // line. With no call in it, the scan keeps its values in registers (a
     // call inside spilled the particle pointer: it cost twice as much).
     const S limit = offset + W::contactMargin();
+    const S negativeLimit = -limit;
     uint8_t near[kSize];
-    const uint8_t count = positive ? scanBelow(world, along, limit, near)
-                                   : scanAbove(world, along, -limit, near);
+    uint8_t count = 0;
+    const P* p = &world.particleAt(0);
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+      if (!isTarget(*p)) continue;
+      const S at = p->position.*along;
+      if (positive ? !(at - p->radius > limit)
+                   : !(at + p->radius < negativeLimit)) {
+        near[count++] = i;
+      }
+    }
     for (uint8_t k = 0; k < count; ++k) {
       const uint8_t i = near[k];
-      const P& p = world.particleAt(i);
-      const S side = positive ? p.position.*along - p.radius
-                              : p.position.*along + p.radius;
+      const P& q = world.particleAt(i);
+      const S side = positive ? q.position.*along - q.radius
+                              : q.position.*along + q.radius;
       touch(world, normal, along, positive, i,
             positive ? offset - side : offset + side, source);
     }
@@ -106,30 +115,6 @@ struct PlaneConstraint {
   // At least one entry: ISO C++ has no zero-size arrays.
   static const uint8_t kSize =
       W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
-
-  // The targets whose coordinate less their radius is at most `limit`
-  // (+e), or whose coordinate plus their radius is at least `limit` (-e),
-  // in slot order, into `near`; returns how many.
-  static uint8_t scanBelow(W& world, S V::*along, S limit, uint8_t* near) {
-    uint8_t* out = near;
-    const P* p = &world.particleAt(0);
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-      if (isTarget(*p) && !(p->position.*along - p->radius > limit)) {
-        *out++ = i;
-      }
-    }
-    return uint8_t(out - near);
-  }
-  static uint8_t scanAbove(W& world, S V::*along, S limit, uint8_t* near) {
-    uint8_t* out = near;
-    const P* p = &world.particleAt(0);
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-      if (isTarget(*p) && !(p->position.*along + p->radius < limit)) {
-        *out++ = i;
-      }
-    }
-    return uint8_t(out - near);
-  }
 
   // A particle within the margin of an axis plane: the separating velocity
   // and the acceleration along the normal are that coordinate of the

@@ -3,11 +3,13 @@
 // a box, a pile at rest (sleeping), a ball dropped on a sleeping pile (it
 // wakes, and reacts as an awake one), tunnelling at and past the speed limit
 // of Contacts/Collisions.hpp, a contact pool too small for a pile,
-// Newton's cradle, and the bouncing balls falling asleep in coarse fixed
-// point.
+// Newton's cradle, the bouncing balls falling asleep in coarse fixed
+// point, and swept contacts (fast pairs that pass through each other within
+// a step).
 //
 // Used by extras/test/ContactsRestTest, ContactsMotionTest and CradleTest (Q16.16)
-// and their Float twins, and ContactsSleepQ24Test: every scene runs from here, the sketches assert on
+// and their Float twins, ContactsSleepQ24Test, and ContactsSweptTest and its
+// Float twin: every scene runs from here, the sketches assert on
 // what it measures. Not included by TinyParticle.h: include
 // <TinyParticle/Testing/ContactChecks.hpp> after it.
 #pragma once
@@ -310,6 +312,70 @@ struct ContactChecks {
     for (uint16_t i = 0; i < 64; ++i) w.step(S(1.0 / 256));
     *error = w.error();
     return w.particle(a)->position.x < w.particle(b)->position.x;
+  }
+
+  // ---- Swept contacts --------------------------------------------------------
+
+  struct SweptResult {
+    bool ordered;      // the first ball is still left of the second
+    float energy;      // kinetic energy after over before
+    float struckSpeed; // m/s, the second ball's speed after
+    float struckAngle; // degrees, its direction from the x axis
+    uint16_t error;    // world.error()
+  };
+
+  // Two balls of radius 2 cm and 0.1 kg, restitution 1, swept collisions
+  // (World::addSweptCollisions), no gravity: the first from (0.1, 0.5) at
+  // `speedA` m/s along x, the second from (0.9037, 0.5 + offset) at
+  // `speedB` m/s against it; 64 steps of 1/256 s.
+  static SweptResult swept(float speedA, float speedB, float offset) {
+    PairWorld w;
+    ParticleId a = w.addParticle(PV(0.1, 0.5), S(0.1), S(0.02));
+    ParticleId b = w.addParticle(PV(0.9037, 0.5 + offset), S(0.1), S(0.02));
+    w.particle(a)->velocity.x = S(speedA);
+    w.particle(b)->velocity.x = S(-speedB);
+    w.addSweptCollisions(S(1));
+    const float before = kineticEnergy2(w);
+    for (uint16_t i = 0; i < 64; ++i) w.step(S(1.0 / 256));
+    SweptResult r;
+    r.ordered = w.particle(a)->position.x < w.particle(b)->position.x;
+    r.energy = kineticEnergy2(w) / before;
+    const float vx = w.particle(b)->velocity.x.toFloat();
+    const float vy = w.particle(b)->velocity.y.toFloat();
+    r.struckSpeed = ::sqrt(vx * vx + vy * vy);
+    r.struckAngle = float(::atan2(vy, vx) * (180.0 / 3.14159265358979));
+    r.error = w.error();
+    return r;
+  }
+
+  // The bouncing balls (8 of them, Scenes/BouncingBalls.hpp) for 2 s at
+  // 1/256 s, all slower than the speed limit: the x + y of every ball at
+  // the end, summed, with plain or swept collisions.
+  static float ballsChecksum(bool swept) {
+    static BallsWorld<S, 2, 8> w;  // does not fit on the Nano's stack
+    w.clear();
+    typename RowWorld::Vec low, high(1.0, 1.0);
+    w.addBox(low, high, S(0.8));
+    w.addGravity();
+    if (swept) {
+      w.addSweptCollisions(S(0.8));
+    } else {
+      w.addCollisions(S(0.8));
+    }
+    SceneRandom random(2024);
+    for (uint8_t i = 0; i < 8; ++i) {
+      typename RowWorld::Vec at(0.25 * (i % 3 + 1), 0.25 * (i / 3 + 1));
+      ParticleId id = w.addParticle(at, S(0.1), S(0.03));
+      w.particle(id)->velocity.x = S(0.7 / 128) * S(int(random.symmetric(128)));
+      w.particle(id)->velocity.y = S(0.7 / 128) * S(int(random.symmetric(128)));
+    }
+    for (uint16_t i = 0; i < 2 * 256; ++i) w.step(S(1.0 / 256));
+    float sum = 0;
+    for (uint8_t i = 0; i < 8; ++i) {
+      sum += w.particleAt(i).position.x.toFloat() +
+             w.particleAt(i).position.y.toFloat();
+    }
+    return sum;
   }
 
   // ---- Newton's cradle ----------------------------------------------------

@@ -448,6 +448,17 @@ class World
     c->generate = &CollisionConstraint<World>::generate;
     return id;
   }
+  // The same, and pairs that pass through each other within a step are
+  // found at any speed (swept contacts, Contacts/Collisions.hpp); costs more
+  // per step. Use one of the two.
+  ConstraintId addSweptCollisions(S restitution) {
+    requireContacts();
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
+    if (c == nullptr) return id;
+    c->generate = &CollisionConstraint<World>::generateSwept;
+    return id;
+  }
 
   ConstraintSlot* constraint(ConstraintId id) {
     return id.index < kConstraints ? liveSlot(constraintAt(id.index), id)
