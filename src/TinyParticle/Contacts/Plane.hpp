@@ -2,7 +2,8 @@
 // dot(normal, position) - radius >= offset. A plane is a contact generator
 // over all particles, so its cost grows with the particle count: a plane
 // whose normal is along an axis takes the fast path, which reads one
-// coordinate instead of taking a dot product.
+// coordinate instead of taking a dot product, and a box's walls share one
+// pass (generateBox()).
 //
 // A particle touching the plane, or within World::contactMargin() of it,
 // makes a contact too: in fixed point a slow particle may not move in a
@@ -22,6 +23,13 @@ template <typename S, uint8_t Dim>
 struct PlaneParams {
   Vec<S, Dim> normal;  // unit length, pointing into the allowed side
   S offset;            // m: the plane is dot(normal, x) = offset
+};
+
+// A box's walls (World::addBox): low <= x <= high.
+template <typename S, uint8_t Dim>
+struct BoxParams {
+  Vec<S, Dim> low;
+  Vec<S, Dim> high;
 };
 
 namespace detail {
@@ -68,8 +76,7 @@ struct PlaneConstraint {
   // A normal of +1 or -1 along one axis: one coordinate instead of a dot
   // product, and one addition per particle to test it. (One function for
   // all axes, found from the normal, costs a compare per plane and step and
-  // saves flash. Tried: one pass over the particles for a whole box; it was
-  // no faster on AVR, the walls' data no longer fit in registers.)
+  // saves flash.)
   static void generateAxis(W& world, typename W::ConstraintSlot& slot,
                            uint8_t source) {
     const V& normal = slot.params.plane.normal;
@@ -107,6 +114,64 @@ struct PlaneConstraint {
                               : q.position.*along + q.radius;
       touch(world, normal, along, positive, i,
             positive ? offset - side : offset + side, source);
+    }
+  }
+
+  // The 2 Dim walls of a box in one pass over the particles: each one's
+  // coordinates and radius are read once for all walls (four planes cost
+  // four passes). The pass only tests and notes which walls each particle
+  // is within reach of; the contacts are made after it, wall by wall in
+  // the order of separate axis planes (x low, x high, y low, ...), so that
+  // a box makes the same contacts in the same order as its planes would.
+  static void generateBox(W& world, typename W::ConstraintSlot& slot,
+                          uint8_t source) {
+    const BoxParams<S, W::kDimensions>& box = slot.params.box;
+    const S margin = W::contactMargin();
+    V lowLimit, highLimit;  // within reach: x - r <= low + margin, ...
+    for (uint8_t k = 0; k < W::kDimensions; ++k) {
+      lowLimit[k] = box.low[k] + margin;
+      highLimit[k] = box.high[k] - margin;
+    }
+    uint8_t near[kSize];
+    uint8_t walls[kSize];  // bit 2k: the low wall of axis k; 2k + 1: high
+    uint8_t count = 0;
+    const P* p = &world.particleAt(0);
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+      if (!isTarget(*p)) continue;
+      const S r = p->radius;
+      uint8_t bits = 0;
+      if (!(p->position.x - r > lowLimit.x)) bits |= 1;
+      if (!(p->position.x + r < highLimit.x)) bits |= 2;
+      if (!(p->position.y - r > lowLimit.y)) bits |= 4;
+      if (!(p->position.y + r < highLimit.y)) bits |= 8;
+      if (W::kDimensions == 3) {
+        if (!(p->position[2] - r > lowLimit[2])) bits |= 16;
+        if (!(p->position[2] + r < highLimit[2])) bits |= 32;
+      }
+      if (bits != 0) {
+        near[count] = i;
+        walls[count] = bits;
+        ++count;
+      }
+    }
+    if (count == 0) return;
+    for (uint8_t wall = 0; wall < 2 * W::kDimensions; ++wall) {
+      const uint8_t axis = uint8_t(wall >> 1);
+      const bool positive = (wall & 1) == 0;
+      const uint8_t bit = uint8_t(1u << wall);
+      S V::*const along = detail::AxisMember<V>::of(axis);
+      V normal;
+      normal.*along = positive ? S(1) : S(-1);
+      // As an axis plane's: offset = low, or minus high.
+      const S offset = positive ? box.low.*along : -(box.high.*along);
+      for (uint8_t k = 0; k < count; ++k) {
+        if ((walls[k] & bit) == 0) continue;
+        const P& q = world.particleAt(near[k]);
+        const S side = positive ? q.position.*along - q.radius
+                                : q.position.*along + q.radius;
+        touch(world, normal, along, positive, near[k],
+              positive ? offset - side : offset + side, source);
+      }
     }
   }
 

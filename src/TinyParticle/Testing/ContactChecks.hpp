@@ -265,7 +265,9 @@ struct ContactChecks {
   // what holds it up: the floor, or the nearest ball whose centre is
   // lower; the largest of those gaps, and the deepest overlap.
   static SettleResult settleBalls(uint8_t seconds) {
-    static BallsWorld<S, 2, 16> w;  // does not fit on the Nano's stack
+    // 24 contacts: the most it asks for is below that (a drop would be
+    // flagged), and the sketch keeps RAM for the stack.
+    static BallsWorld<S, 2, 16, 24> w;  // does not fit on the Nano's stack
     w.clear();
     buildBouncingBalls(w, 16);
     SettleResult r = {0, 0, 0, 0};

@@ -59,10 +59,13 @@ struct ConstraintSlot {
     uint8_t none;
     LinkParams<S, Dim> link;  // rods and cables
     PlaneParams<S, Dim> plane;
+    BoxParams<S, Dim> box;    // no larger than a link
   } params;
 
   constexpr ConstraintSlot()
       : generate(nullptr), a(0), b(0), generation(0), restitution(), params() {}
+  static_assert(sizeof(BoxParams<S, Dim>) <= sizeof(LinkParams<S, Dim>),
+                "a box's parameters must not make every constraint slot larger");
   bool inUse() const { return generate != nullptr; }
 };
 

@@ -428,15 +428,19 @@ class World
   }
 
   // The walls of the box low <= x <= high (2 Dim axis-aligned planes, facing
-  // inwards). False if the pool could not take them all.
+  // inwards), in one constraint slot: one pass over the particles for all
+  // walls. False if the pool has no free slot.
   bool addBox(const Vec& low, const Vec& high, S restitution) {
     requireContacts();
-    bool ok = true;
-    for (uint8_t k = 0; k < Dim; ++k) {
-      ok = addAxisPlane(k, true, low[k], restitution).isValid() && ok;
-      ok = addAxisPlane(k, false, high[k], restitution).isValid() && ok;
-    }
-    return ok;
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
+    if (c == nullptr) return false;
+    BoxParams<S, Dim> params;
+    params.low = low;
+    params.high = high;
+    c->params.box = params;
+    c->generate = &PlaneConstraint<World>::generateBox;
+    return true;
   }
 
   // Collisions between all pairs of colliding particles.
