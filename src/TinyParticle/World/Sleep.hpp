@@ -30,6 +30,7 @@
 
 #include <stdint.h>
 
+#include "../Configuration.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
@@ -101,7 +102,6 @@ struct Sleeping {
   // nothing to do.
   static bool settle(W& world, S dt) {
     const S limit = W::sleepSpeed();
-    const Scaler<S> byDt(dt);
     // Without sleepers the first particle that moves ends the look (in a
     // busy scene, usually the first one); sleepers are all looked at, for
     // a disturbance.
@@ -120,7 +120,7 @@ struct Sleeping {
       }
       awake = true;
       if (pushed ||
-          !(isSlow(p.velocity, limit) || isStuck(p.velocity, byDt))) {
+          !(isSlow(p.velocity, limit) || isStuck(p.velocity, dt))) {
         still = false;
         if (!sleepers) break;
       }
@@ -145,11 +145,17 @@ struct Sleeping {
 
  private:
   // Moved by nothing in a step: v dt rounds to zero on every axis, as the
-  // integrator rounds it (World::move()).
-  static bool isStuck(const Vec<S, 2>& v, const Scaler<S>& byDt) {
+  // integrator rounds it (World::move()). Out of line, dt by reference:
+  // asked only of a particle faster than the sleep speed, it leaves the
+  // look's loop its registers.
+  TINYPARTICLE_NOINLINE static bool isStuck(const Vec<S, 2>& v,
+                                            const S& dt) {
+    const Scaler<S> byDt(dt);
     return detail::isZero(byDt(v.x)) && detail::isZero(byDt(v.y));
   }
-  static bool isStuck(const Vec<S, 3>& v, const Scaler<S>& byDt) {
+  TINYPARTICLE_NOINLINE static bool isStuck(const Vec<S, 3>& v,
+                                            const S& dt) {
+    const Scaler<S> byDt(dt);
     return detail::isZero(byDt(v.x)) && detail::isZero(byDt(v.y)) &&
            detail::isZero(byDt(v.z));
   }
