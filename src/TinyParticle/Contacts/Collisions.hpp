@@ -390,9 +390,13 @@ struct CollisionConstraint {
     const S along = dot(p0, ds);  // < 0 while the centres close
     const S lengthSquared = dot(ds, ds);
     const S startSquared = dot(p0, p0);
-    // Touching at the start (then last step's contacts had it), or not
-    // closing: none.
-    if (!(startSquared > outerSquared) || !(along < S())) return false;
+    // Touching at the start (then last step's contacts had it), not
+    // closing, or a relative move too small to show after the scaling:
+    // none.
+    if (!(startSquared > outerSquared) || !(along < S()) ||
+        !(lengthSquared > S())) {
+      return false;
+    }
     // The nearest point of the path must be inside it (the end is apart),
     // and within outer: its distance squared is
     // |p0|^2 - along^2 / |d|^2, compared without the division.
