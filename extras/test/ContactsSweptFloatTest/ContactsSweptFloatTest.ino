@@ -1,8 +1,8 @@
 // Swept contacts (World::addSweptCollisions): two balls that pass through
 // each other within one step, far past the speed limit of plain collisions,
 // still collide, as exactly as slow ones. (Float here; ContactsSweptTest
-// runs the same checks with the other scalar; ContactsSweptBallsFloatTest: below
-// the limit a swept world steps exactly as a plain one.)
+// runs the same checks with the other scalar; ContactsSweptBallsFloatTest:
+// below the limit a swept world steps exactly as a plain one.)
 #include <AUnit.h>
 #include <TinyParticle.h>
 #include <TinyParticle/Testing/ContactChecks.hpp>

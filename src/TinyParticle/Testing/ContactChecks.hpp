@@ -4,12 +4,12 @@
 // wakes, and reacts as an awake one), tunnelling at and past the speed limit
 // of Contacts/Collisions.hpp, a contact pool too small for a pile,
 // Newton's cradle, the bouncing balls falling asleep in coarse fixed
-// point, and swept contacts (fast pairs that pass through each other within
-// a step).
+// point, swept contacts (fast pairs that pass through each other within a
+// step), and a box against its planes.
 //
 // Used by extras/test/ContactsRestTest, ContactsMotionTest and CradleTest (Q16.16)
-// and their Float twins, ContactsSleepQ24Test, and ContactsSweptTest and its
-// Float twin: every scene runs from here, the sketches assert on
+// and their Float twins, ContactsSleepQ24Test, and ContactsSwept*Test and
+// ContactsBox*Test: every scene runs from here, the sketches assert on
 // what it measures. Not included by TinyParticle.h: include
 // <TinyParticle/Testing/ContactChecks.hpp> after it.
 #pragma once
@@ -316,7 +316,7 @@ struct ContactChecks {
     return w.particle(a)->position.x < w.particle(b)->position.x;
   }
 
-  // ---- Swept contacts --------------------------------------------------------
+  // ---- Swept contacts -----------------------------------------------------
 
   struct SweptResult {
     bool ordered;      // the first ball is still left of the second
@@ -376,6 +376,84 @@ struct ContactChecks {
     for (uint8_t i = 0; i < 8; ++i) {
       sum += w.particleAt(i).position.x.toFloat() +
              w.particleAt(i).position.y.toFloat();
+    }
+    return sum;
+  }
+
+  // ---- A box against its planes -------------------------------------------
+
+  // Eight balls (r = 3 cm, 0.1 kg) thrown about a 1 m box under gravity
+  // for 2 s at 1/256 s, restitution 0.8, in 2D or 3D: the box as addBox
+  // (one pass for all walls) or as its 2 Dim axis planes, added in the
+  // box's order (x low, x high, y low, ...). Returns the x + y (+ z) of
+  // every ball at the end, summed, and in `touched` the walls that made a
+  // contact at some step (bit 2k: the low wall of axis k, 2k + 1: the
+  // high one), whether two walls of one ball made contacts in one step (a
+  // corner) in bit 7, and in bit 6 whether the contact pool ran full.
+  template <uint8_t Dim>
+  static float boxChecksum(bool asBox, uint8_t* touched) {
+    typedef World<S, Dim, 8, 1, 2 * Dim + 1, 16> BoxWorld;
+    typedef typename BoxWorld::Vec V;
+    static BoxWorld w;  // does not fit on the Nano's stack
+    w.clear();
+    V low, high;
+    for (uint8_t k = 0; k < Dim; ++k) high[k] = S(1);
+    if (asBox) {
+      w.addBox(low, high, S(0.8));
+    } else {
+      for (uint8_t k = 0; k < Dim; ++k) {
+        V normal;
+        normal[k] = S(1);
+        w.addPlane(normal, S(), S(0.8));  // x_k >= 0
+        normal[k] = S(-1);
+        w.addPlane(normal, S(-1), S(0.8));  // x_k <= 1
+      }
+    }
+    w.addGravity();
+    w.addCollisions(S(0.8));
+    SceneRandom random(7);
+    for (uint8_t i = 0; i < 8; ++i) {
+      V at;
+      at.x = S(0.2 + 0.2 * (i % 4));
+      at.y = S(0.3 + 0.4 * (i / 4));
+      if (Dim == 3) at[2] = S(0.5);
+      // The first one flies into the corner at the origin (two or three
+      // walls at once).
+      if (i == 0) at = V();
+      for (uint8_t k = 0; i == 0 && k < Dim; ++k) at[k] = S(0.04);
+      ParticleId id = w.addParticle(at, S(0.1), S(0.03));
+      for (uint8_t k = 0; k < Dim; ++k) {
+        w.particle(id)->velocity[k] =
+            i == 0 ? S(-1) : S(4.0 / 128) * S(int(random.symmetric(128)));
+      }
+    }
+    *touched = 0;
+    for (uint16_t i = 0; i < 2 * 256; ++i) {
+      w.step(S(1.0 / 256));
+      uint8_t wallsOf[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+      for (uint8_t c = 0; c < w.contactCount(); ++c) {
+        const typename BoxWorld::ContactType& contact = w.contactAt(c);
+        if (contact.b != kNoIndex) continue;  // a ball, not a wall
+        for (uint8_t k = 0; k < Dim; ++k) {
+          const uint8_t low = uint8_t(1u << (2 * k));
+          if (contact.normal[k] == S(1)) wallsOf[contact.a] |= low;
+          if (contact.normal[k] == S(-1)) {
+            wallsOf[contact.a] |= uint8_t(low << 1);
+          }
+        }
+      }
+      for (uint8_t b = 0; b < 8; ++b) {
+        *touched |= wallsOf[b];
+        if (wallsOf[b] & (wallsOf[b] - 1)) *touched |= 0x80;  // two bits
+      }
+    }
+    // A full contact pool would drop contacts: flagged as bit 6.
+    if (w.error() & WorldError::kContactsDropped) *touched |= 0x40;
+    float sum = 0;
+    for (uint8_t i = 0; i < 8; ++i) {
+      for (uint8_t k = 0; k < Dim; ++k) {
+        sum += w.particleAt(i).position[k].toFloat();
+      }
     }
     return sum;
   }
