@@ -251,15 +251,15 @@ struct CollisionConstraint {
           continue;
         }
         // The lower slot index is a, as a sweep in slot order would have it.
-        const uint8_t low = i < j ? i : j, high = i < j ? j : i;
+        const uint8_t first = i < j ? i : j, second = i < j ? j : i;
         // In a fast step, a pair that was apart when it began and met in
         // it gets the contact of its first touch, also when it ends the
         // step overlapping: there the normal from the end positions would
         // be off (a ball 20 cm into another one in a step). (Called from
         // here, not from pair(): this is the deepest point of the step's
         // stack.)
-        if (!kSwept || !sweptPair(world, low, high, outer, source)) {
-          pair(world, low, high, outer, source);
+        if (!kSwept || !sweptPair(world, first, second, outer, source)) {
+          pair(world, first, second, outer, source);
         }
       }
     }

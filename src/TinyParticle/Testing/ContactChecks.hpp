@@ -435,10 +435,10 @@ struct ContactChecks {
         const typename BoxWorld::ContactType& contact = w.contactAt(c);
         if (contact.b != kNoIndex) continue;  // a ball, not a wall
         for (uint8_t k = 0; k < Dim; ++k) {
-          const uint8_t low = uint8_t(1u << (2 * k));
-          if (contact.normal[k] == S(1)) wallsOf[contact.a] |= low;
+          const uint8_t lowWall = uint8_t(1u << (2 * k));
+          if (contact.normal[k] == S(1)) wallsOf[contact.a] |= lowWall;
           if (contact.normal[k] == S(-1)) {
-            wallsOf[contact.a] |= uint8_t(low << 1);
+            wallsOf[contact.a] |= uint8_t(lowWall << 1);
           }
         }
       }
