@@ -134,7 +134,7 @@ struct PlaneConstraint {
     }
     uint8_t near[kSize];
     uint8_t walls[kSize];  // bit 2k: the low wall of axis k; 2k + 1: high
-    uint8_t count = 0;
+    uint8_t count = 0, touched = 0;
     const P* p = &world.particleAt(0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (!isTarget(*p)) continue;
@@ -151,14 +151,15 @@ struct PlaneConstraint {
       if (bits != 0) {
         near[count] = i;
         walls[count] = bits;
+        touched |= bits;
         ++count;
       }
     }
-    if (count == 0) return;
     for (uint8_t wall = 0; wall < 2 * W::kDimensions; ++wall) {
+      const uint8_t bit = uint8_t(1u << wall);
+      if ((touched & bit) == 0) continue;  // no particle near this wall
       const uint8_t axis = uint8_t(wall >> 1);
       const bool positive = (wall & 1) == 0;
-      const uint8_t bit = uint8_t(1u << wall);
       S V::*const along = detail::AxisMember<V>::of(axis);
       V normal;
       normal.*along = positive ? S(1) : S(-1);
