@@ -165,7 +165,11 @@ class Scene {
         case 12: ok = keep(mConstraints, mWorld.addCable(particle(), particle(), scalar(), scalar())); added = true; break;
         case 13: ok = keep(mConstraints, mWorld.addPlane(vec(), scalar(), scalar())); added = true; break;
         case 14: mWorld.addBox(vec(), vec(), scalar()); break;
-        case 15: ok = keep(mConstraints, mWorld.addCollisions(scalar())); added = true; break;
+        case 15:  // plain or swept collisions, by the op's top bit
+          ok = keep(mConstraints, (op & 0x80) ? mWorld.addSweptCollisions(scalar())
+                                              : mWorld.addCollisions(scalar()));
+          added = true;
+          break;
         case 16: {
           const ConstraintId id = constraint();
           if (mWorld.removeConstraint(id) && mWorld.constraint(id) != nullptr) fail("removed constraint still live");

@@ -1,6 +1,6 @@
-// The stability suite of issue 13, Q16.16: contacts, springs, the range
-// edge, tiny steps and exhausted pools. StabilitySuiteRodsTest has the rod
-// cases; the *FloatTest sketches run both in Float; StabilitySuiteQ24Test
+// The stability suite of issue 13, Q16.16: contacts, springs and the range
+// edge. StabilitySuiteWorldTest has tiny steps and exhausted pools,
+// StabilitySuiteRodsTest the rod cases; the *FloatTest sketches run both in Float; StabilitySuiteQ24Test
 // has the Q24.8 cases and the real-time loop across the wrap of micros()
 // (each sketch must fit the Nano's 30 KB). The cases,
 // their bounds and the reasons for them are in
@@ -25,18 +25,6 @@ test(Stack_Q16_16) {
 }
 test(Coincident_Q16_16) { assertTrue(Cases::checkCoincident()); }
 test(RangeEdge_Q16_16) { assertTrue(Cases::checkRangeEdge()); }
-// The smallest useful step: Euler's error g t dt / 2 shrinks with dt, the
-// worst case of rounding (half a unit a step) grows as 1 / dt; the rows of
-// extras/stability/README.md show where the measured error stops falling.
-test(TinyDt_Q16_16) {
-  bool ok = Cases::checkFreeFall(256, F("free-fall-dt-1/256-m"));
-  ok &= Cases::checkFreeFall(1024, F("free-fall-dt-1/1024-m"));
-  ok &= Cases::checkFreeFall(4096, F("free-fall-dt-1/4096-m"));
-  ok &= Cases::checkFreeFall(16384, F("free-fall-dt-1/16384-m"));
-  assertTrue(ok);
-}
-test(Exhaustion_Q16_16) { assertTrue(Cases::checkExhaustion()); }
-
 void setup() {
 #if !defined(EPOXY_DUINO)
   delay(1000);

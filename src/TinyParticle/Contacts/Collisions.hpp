@@ -1,11 +1,11 @@
 // Particle-particle collisions between spheres, as a contact generator: a
-// scene that never calls World::addCollisions() links none of this code and
-// pays nothing per step.
+// scene that never calls World::addCollisions() (or addSweptCollisions())
+// links none of this code and pays nothing per step.
 //
-// Sort and sweep along x. Each colliding particle's extent along x starts at
-// low = x - r (less the contact margin); the particles are sorted by it, and
-// each one is paired only with those after it whose extent starts before
-// its own ends: the inner loop stops at the first one that does not, so a
+// Sort and sweep along x. The colliding particles are sorted by the x of
+// their centres, and each one is paired only with those after it whose
+// centre is within its radius plus the largest radius (plus the contact
+// margin) along x: the inner loop stops at the first one that is not, so a
 // step costs about one compare per particle plus one per pair that overlaps
 // along x, instead of one per pair. The order is kept from one step to the
 // next (particles move little in a step), so the insertion sort that
@@ -30,6 +30,20 @@
 // whatever has crossed one is behind it and is pushed back. (r = 3 cm at
 // dt = 1/256 s: 7.7 m/s; halving dt doubles it.)
 //
+// Swept contacts (World::addSweptCollisions()) lift the limit for pairs. A
+// step below it is exactly the plain one. A step past it sweeps: each
+// particle moved in a straight line, so a pair's difference went from
+// p0 = delta - d to delta (d, the difference of their moves); the sweep
+// takes in the moves along x and y, and a pair that was apart at the start
+// and whose path came within reach gets the contact of its first touch
+// (sweptPair()), however fast, also when it ends the step overlapping or
+// past each other. No flag is raised. What a swept step can still get
+// wrong: a particle that also meets a plane or a third particle in the
+// same step (its path was not straight), or one that the resolver pushes
+// back out of a deep contact through a third one it did not touch. The
+// sweep costs more cycles, and more stack (sweptPair()'s frame, on top of
+// the sort list's), only in the steps past the limit.
+//
 // Memory: the sort order lives in a static array of one byte per particle
 // slot (plus one), linked only with this generator. Worlds of one type share
 // it; any starting order gives the same contacts, a shared one is only less
@@ -40,12 +54,54 @@
 #include <stdint.h>
 
 #include "../Configuration.hpp"
+#include "../Math/Fixed.hpp"
 #include "../Math/Scaler.hpp"
+#include "../Math/ScalarTraits.hpp"
 #include "../Math/Vec.hpp"
 #include "../Core/Handle.hpp"
 #include "../Core/Access.hpp"
 
 namespace tinyparticle {
+namespace detail {
+
+// |vx| + |vy| (+ |vz|), for the speed limit: in any scalar, a sum that
+// cannot overflow (Sum) and its value as the scalar (toScalar); along()
+// is one axis's share.
+template <typename S>
+struct AxisSpeed {
+  typedef S Sum;
+  static S of(const Vec<S, 2>& v) { return fabs(v.x) + fabs(v.y); }
+  static S of(const Vec<S, 3>& v) {
+    return fabs(v.x) + fabs(v.y) + fabs(v.z);
+  }
+  static S along(S v) { return fabs(v); }
+  static S toScalar(S sum) { return sum; }
+};
+
+// Fixed point: the magnitudes of the raw values, unsigned; a sum past the
+// unsigned range is held at its top (3D: three magnitudes of up to 2^31).
+template <uint8_t I, uint8_t F>
+struct AxisSpeed<Fixed<I, F> > {
+  typedef Fixed<I, F> T;
+  typedef typename T::URaw Sum;
+  static Sum of(const Vec<T, 2>& v) { return plus(along(v.x), along(v.y)); }
+  static Sum of(const Vec<T, 3>& v) {
+    return plus(plus(along(v.x), along(v.y)), along(v.z));
+  }
+  static Sum along(T v) { return T::magnitude(v.raw()); }
+  static T toScalar(Sum sum) {
+    return sum > Sum(T::kRawMax) ? T::largest()
+                                 : T::fromRaw(typename T::Raw(sum));
+  }
+
+ private:
+  static Sum plus(Sum a, Sum b) {
+    const Sum sum = Sum(a + b);
+    return sum < a ? Sum(~Sum(0)) : sum;
+  }
+};
+
+}  // namespace detail
 
 template <class W>
 struct CollisionConstraint {
@@ -53,108 +109,164 @@ struct CollisionConstraint {
   typedef typename W::Vec V;
   typedef typename W::ParticleType P;
 
+  // World::addCollisions(): contacts of touching pairs, and the speed limit.
   static void generate(W& world, typename W::ConstraintSlot&, uint8_t source) {
+    generateWith<false>(world, source);
+  }
+  // World::addSweptCollisions(): also the pairs whose paths in the step
+  // met, at any speed (top of this file).
+  static void generateSwept(W& world, typename W::ConstraintSlot&,
+                            uint8_t source) {
+    generateWith<true>(world, source);
+  }
+
+ private:
+  template <bool kSwept>
+  static void generateWith(W& world, uint8_t source) {
     const uint8_t both = P::kInUse | P::kCollides;
-    const S margin = W::contactMargin();
     // At least one entry: ISO C++ has no zero-size arrays.
     static const uint8_t kSize =
         W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
     uint8_t* order = sortOrder();
 
-    // The colliding particles in last step's order, with the start of
-    // their extent along x, each inserted at its place (insertion sort: a
-    // nearly sorted list costs one compare per particle).
+    // The colliding particles in last step's order, by their centre's x,
+    // each inserted at its place (insertion sort: a nearly sorted list
+    // costs one compare per particle). The centre, not the start of the
+    // extent: the loop then does no arithmetic, and the sweep allows for
+    // the largest radius instead.
     Entry entries[kSize];
     Entry* end = entries;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
       const uint8_t i = order[k];
       const P& p = world.particleAt(i);
       if ((p.flags & both) != both) continue;
-      const S low = p.position.x - (p.radius + margin);
+      const S x = p.position.x;
       Entry* e = end++;
-      while (e != entries && low < e[-1].low) {
+      while (e != entries && x < e[-1].x) {
         *e = e[-1];
         --e;
       }
-      e->low = low;
+      e->x = x;
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
-    if (isTooFast(world)) {
-      WorldAccess::raiseError(world, WorldError::kTunnelling);
-    }
     // Keep the new order for the next step: the colliding particles
     // sorted, then the others (any order will do for them).
     if (count > 0) {
       uint8_t* o = order;
       for (const Entry* e = entries; e != end; ++e) *o++ = e->index;
-      for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-        if ((world.particleAt(i).flags & both) != both) *o++ = i;
+      if (count < W::kParticleCapacity) {
+        for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+          if ((world.particleAt(i).flags & both) != both) *o++ = i;
+        }
       }
     }
-    sweep(world, entries, count, margin, source);
+    // Swept contacts only in a step that goes past the speed limit: below
+    // it the plain sweep finds every pair that met.
+    bool fast = false;
+    const S spread = survey<kSwept>(world, fast);
+    if (kSwept && fast) {
+      sweep<true>(world, entries, count, spread, source);
+    } else {
+      sweep<false>(world, entries, count, spread, source);
+    }
   }
 
- private:
   struct Entry {
-    S low;
+    S x;
     uint8_t index;
   };
 
-
-  // The speed limit (top of this file): whether the fastest moving
-  // colliding particle goes farther in this step, counting the axes
-  // together, than the smallest one's radius. Out of line, with a pointer
-  // walk: in the sort loop it cost three times as much (spilled registers).
-  TINYPARTICLE_NOINLINE static bool isTooFast(W& world) {
-    const uint8_t mask = P::kInUse | P::kCollides | P::kStatic | P::kAsleep;
-    const uint8_t moving = P::kInUse | P::kCollides;
-    S fastest = S(), smallest = S::largest();
+  // One look at the colliding particles: the spread of the sweep
+  // (returned): the largest radius plus the contact margin; and the speed
+  // limit (top of this file): whether the fastest moving one goes farther
+  // in this step, counting the axes together, than the smallest moving
+  // one's radius. Past it, without swept contacts, the step raises
+  // WorldError::kTunnelling; with them, it is `fast`, and the spread takes
+  // in the longest move along x too. Out of line, with a pointer walk: in
+  // the sort loop it cost three times as much (spilled registers). The
+  // speeds are AxisSpeed's magnitudes: for fixed point the raw bits,
+  // unsigned, with no saturating arithmetic in the loop.
+  template <bool kSwept>
+  TINYPARTICLE_NOINLINE static S survey(W& world, bool& fast) {
+    typedef detail::AxisSpeed<S> Speed;
+    typedef typename Speed::Sum Sum;
+    const uint8_t both = P::kInUse | P::kCollides;
+    Sum fastest = Sum(), fastestX = Sum();
+    S smallest = S::largest(), largest = S();
     const P* p = &world.particleAt(0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-      if ((p->flags & mask) != moving) continue;
-      S speed = fabs(p->velocity.x) + fabs(p->velocity.y);
-      if (W::kDimensions == 3) speed += fabs(p->velocity[2]);
+      if ((p->flags & both) != both) continue;
+      if (p->radius > largest) largest = p->radius;
+      if (p->isResting()) continue;  // immovable or asleep
+      const Sum speed = Speed::of(p->velocity);
       if (speed > fastest) fastest = speed;
+      if (kSwept) {
+        const Sum speedX = Speed::along(p->velocity.x);
+        if (speedX > fastestX) fastestX = speedX;
+      }
       if (p->radius < smallest) smallest = p->radius;
     }
-    return WorldAccess::stepScaler(world)(fastest) > smallest;
+    const Scaler<S>& byDt = WorldAccess::stepScaler(world);
+    const S spread = largest + W::contactMargin();
+    fast = byDt(Speed::toScalar(fastest)) > smallest;
+    if (!kSwept) {
+      if (fast) WorldAccess::raiseError(world, WorldError::kTunnelling);
+      return spread;
+    }
+    return fast ? spread + byDt(Speed::toScalar(fastestX)) : spread;
   }
 
-  // The pairs of the sorted list. Out of line, so that its frame is small:
-  // behind the list's frame, every spilled value would cost more to reach.
+  // The pairs of the sorted list; spread from survey(). Out of line, so
+  // that its frame is small: behind the list's frame, every spilled value
+  // would cost more to reach.
+  template <bool kSwept>
   TINYPARTICLE_NOINLINE static void sweep(W& world, const Entry* entries,
-                                          uint8_t count, S margin,
+                                          uint8_t count, S spread,
                                           uint8_t source) {
+    const S margin = W::contactMargin();
     for (uint8_t m = 0; m + 1 < count; ++m) {
       const uint8_t i = entries[m].index;
       const P& p = world.particleAt(i);
       const S reach = p.radius + margin;
-      const S high = p.position.x + reach;
-      // Every later entry starts at or after this one; those that start
-      // past its end, and all after them, are apart along x.
-      for (uint8_t n = m + 1; n < count && !(high < entries[n].low); ++n) {
+      // Every later entry's centre is at or after this one's; those whose
+      // centre is farther than this radius plus the largest one (and the
+      // margin, and with swept contacts both moves along x), and all after
+      // them, are apart along x.
+      S high = entries[m].x + (p.radius + spread);
+      if (kSwept) high += moveOf(world, p, p.velocity.x);
+      for (uint8_t n = m + 1; n < count && !(high < entries[n].x); ++n) {
         const uint8_t j = entries[n].index;
         const P& q = world.particleAt(j);
-        // Apart along another axis: |d| > r1 + r2 + margin. Tested here,
-        // before a call: most pairs that overlap along x end here.
+        // Apart along an axis: |d| > r1 + r2 + margin (with swept
+        // contacts, plus both moves along it). Tested here, before a call:
+        // most pairs that overlap along x end here.
         const S outer = reach + q.radius;
-        if (fabs(p.position.y - q.position.y) > outer) continue;
-        if (W::kDimensions == 3 &&
-            fabs(p.position[2] - q.position[2]) > outer) {
+        if (!kSwept) {
+          if (fabs(p.position.y - q.position.y) > outer) continue;
+          if (W::kDimensions == 3 &&
+              fabs(p.position[2] - q.position[2]) > outer) {
+            continue;
+          }
+        } else if (sweptApart(world, p, q, outer)) {
           continue;
         }
         // The lower slot index is a, as a sweep in slot order would have it.
-        if (i < j) {
-          pair(world, i, j, outer, source);
-        } else {
-          pair(world, j, i, outer, source);
+        const uint8_t first = i < j ? i : j, second = i < j ? j : i;
+        // In a fast step, a pair that was apart when it began and met in
+        // it gets the contact of its first touch, also when it ends the
+        // step overlapping: there the normal from the end positions would
+        // be off (a ball 20 cm into another one in a step). (Called from
+        // here, not from pair(): this is the deepest point of the step's
+        // stack.)
+        if (!kSwept || !sweptPair(world, first, second, outer, source)) {
+          pair(world, first, second, outer, source);
         }
       }
     }
   }
 
-  // The order of the particle slots by the start of their extent along x,
+  // The order of the particle slots by their centre's x,
   // as of the last step: a permutation of 0 .. capacity - 1.
   static uint8_t* sortOrder() {
     static const uint8_t kSize =
@@ -191,6 +303,132 @@ struct CollisionConstraint {
       normal.y = S(1);  // centres coincide: any direction will do
     }
     WorldAccess::addContact(world, i, j, normal, penetration, source);
+  }
+  // ---- Swept contacts (World::addSweptCollisions()) ----------------------
+
+  // How far a particle moved along one axis in this step, |v dt| (none for
+  // an immovable or sleeping one): the integrator's own x += v dt.
+  static S moveOf(W& world, const P& p, S velocity) {
+    if (p.isResting()) return S();
+    return fabs(WorldAccess::stepScaler(world)(velocity));
+  }
+  static V movesOf(W& world, const P& p) {
+    V move;
+    if (p.isResting()) return move;
+    const Scaler<S>& byDt = WorldAccess::stepScaler(world);
+    move.x = byDt(p.velocity.x);
+    move.y = byDt(p.velocity.y);
+    if (W::kDimensions == 3) move[2] = byDt(p.velocity[2]);
+    return move;
+  }
+
+  // The boxes that the two particles swept in this step are apart along y
+  // (or z): farther than outer plus both moves along it.
+  TINYPARTICLE_NOINLINE static bool sweptApart(W& world, const P& p,
+                                               const P& q, S outer) {
+    if (fabs(p.position.y - q.position.y) >
+        outer + moveOf(world, p, p.velocity.y) +
+            moveOf(world, q, q.velocity.y)) {
+      return true;
+    }
+    return W::kDimensions == 3 &&
+           fabs(p.position[2] - q.position[2]) >
+               outer + moveOf(world, p, p.velocity[2]) +
+                   moveOf(world, q, q.velocity[2]);
+  }
+
+  // Whether a pair i < j was apart (farther than outer) when the step
+  // began and came within outer during it; if so, it gets its contact here
+  // (delta = a - b at the end of the step). Both moved in a straight line, so
+  // their difference went from p0 = delta - d to delta, d the difference of
+  // their moves. The contact is as at the first touch: its normal along
+  // the difference where the distance first was r1 + r2 (for a grazing
+  // pass, where it was least), and its depth what the pair must move back
+  // along it, r1 + r2 - dot(delta, normal), more than r1 + r2 when the
+  // centres passed each other. The resolver moves them back and bounces
+  // them.
+  TINYPARTICLE_NOINLINE static bool sweptPair(W& world, uint8_t i, uint8_t j,
+                                              S outer, uint8_t source) {
+    const P& a = world.particleAt(i);
+    const P& b = world.particleAt(j);
+    const V delta = a.position - b.position;
+    const bool apart = delta.magnitudeSquared() > outer * outer;
+    // (Few vectors, each updated in place: this runs deep in the step's
+    // stack, next to the sort list.)
+    V ds = movesOf(world, a);
+    ds -= movesOf(world, b);
+    // The path is at least |delta| - |d| away: along the axes, the largest
+    // of delta's against the sum of d's. Slow pairs end here.
+    S largest = fmax(fabs(delta.x), fabs(delta.y));
+    S dSum = fabs(ds.x) + fabs(ds.y);
+    if (W::kDimensions == 3) {
+      largest = fmax(largest, fabs(delta[2]));
+      dSum += fabs(ds[2]);
+    }
+    if (!(dSum > S())) return false;  // no relative move
+    if (apart && largest - dSum > outer) return false;
+    V p0 = delta;
+    p0 -= ds;
+    // In fixed point, the products below of centimetres would be a few
+    // units: scale the lengths first by a power of two that brings the
+    // largest to [1/2, 1) (exact up to the last bit; floats need none).
+    S scale = S(1);
+    if (ScalarTraits<S>::kCoarse) {
+      largest = fmax(fmax(largest, dSum), outer);
+      while (largest < S(0.5)) {
+        largest = largest + largest;
+        scale = scale + scale;
+      }
+      while (!(largest < S(1))) {
+        largest = detail::half(largest);
+        scale = detail::half(scale);
+      }
+      ds *= scale;
+      p0 *= scale;
+    }
+    const S scaledOuter = outer * scale;
+    const S outerSquared = scaledOuter * scaledOuter;
+    const S along = dot(p0, ds);  // < 0 while the centres close
+    const S lengthSquared = dot(ds, ds);
+    const S startSquared = dot(p0, p0);
+    // Touching at the start (then last step's contacts had it), not
+    // closing, or a relative move too small to show after the scaling:
+    // none.
+    if (!(startSquared > outerSquared) || !(along < S()) ||
+        !(lengthSquared > S())) {
+      return false;
+    }
+    // The nearest point of the path must be inside it (the end is apart),
+    // and within outer: its distance squared is
+    // |p0|^2 - along^2 / |d|^2, compared without the division.
+    if (apart && (!(-along < lengthSquared) ||
+                  crossSquared(p0, ds) > outerSquared * lengthSquared)) {
+      return false;
+    }
+    // The first touch: |p0 + t d| = r1 + r2, the smaller root t.
+    const S reach = (a.radius + b.radius) * scale;
+    const S discriminant =
+        along * along - lengthSquared * (startSquared - reach * reach);
+    S t = discriminant < S()
+              ? -along / lengthSquared  // grazing: the nearest point
+              : (-along - sqrt(discriminant)) / lengthSquared;
+    if (t > S(1)) t = S(1);
+    p0.addScaled(ds, t);  // the difference at the first touch
+    if (p0.magnitudeAndNormalize() == S()) {
+      p0 = -ds;  // met centre on centre: back the way a came
+      p0.normalize();
+    }
+    WorldAccess::addContact(world, i, j, p0, (a.radius + b.radius) - dot(delta, p0),
+                     source);
+    return true;
+  }
+  // |u x v|^2.
+  static S crossSquared(const Vec<S, 2>& u, const Vec<S, 2>& v) {
+    const S c = u.x * v.y - u.y * v.x;
+    return c * c;
+  }
+  static S crossSquared(const Vec<S, 3>& u, const Vec<S, 3>& v) {
+    return cross(u, v).magnitudeSquared();
   }
 };
 

@@ -2,7 +2,8 @@
 // dot(normal, position) - radius >= offset. A plane is a contact generator
 // over all particles, so its cost grows with the particle count: a plane
 // whose normal is along an axis takes the fast path, which reads one
-// coordinate instead of taking a dot product.
+// coordinate instead of taking a dot product, and a box's walls share one
+// pass (generateBox()).
 //
 // A particle touching the plane, or within World::contactMargin() of it,
 // makes a contact too: in fixed point a slow particle may not move in a
@@ -20,6 +21,16 @@
 #include "../Core/Access.hpp"
 
 namespace tinyparticle {
+
+// A box's walls (World::addBox): low <= x <= high, in one constraint slot
+// (PlaneConstraint::generateBox()). A generator class of its own, so that
+// the slot's kind tells a box from a plane.
+template <typename S, uint8_t Dim>
+struct BoxParams {
+  static const uint8_t kShape = SlotShape::kNone;
+  Vec<S, Dim> low;
+  Vec<S, Dim> high;
+};
 
 namespace detail {
 
@@ -77,8 +88,7 @@ struct PlaneConstraint {
   // A normal of +1 or -1 along one axis: one coordinate instead of a dot
   // product, and one addition per particle to test it. (One function for
   // all axes, found from the normal, costs a compare per plane and step and
-  // saves flash. Tried: one pass over the particles for a whole box; it was
-  // no faster on AVR, the walls' data no longer fit in registers.)
+  // saves flash.)
   template <class W>
   static void generateAxis(W& world, typename W::ConstraintSlot& slot,
                            uint8_t source) {
@@ -96,31 +106,105 @@ struct PlaneConstraint {
     // With the normal +e: penetration = offset - (x - r), a contact from
     // -margin on, i.e. while x - r <= offset + margin. With -e (offset holds
     // minus the bound): penetration = offset + (x + r), while
-    // x + r >= -(offset + margin). The loops only test; the rare contact is
-    // made out of line, so that the loops keep their values in registers.
+    // x + r >= -(offset + margin). The scan only tests and notes the
+    // particles within reach; their contacts are made after it, out of
+    // line. With no call in it, the scan keeps its values in registers (a
+    // call inside spilled the particle pointer: it cost twice as much).
     const S limit = offset + W::contactMargin();
-    P* p = &WorldAccess::particle(world, 0);
-    if (positive) {
-      for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-        if (!isTarget(*p)) continue;
-        const S side = p->position.*along - p->radius;
-        if (!(side > limit)) {
-          touch(world, normal, along, true, i, offset - side, source);
-        }
+    const S negativeLimit = -limit;
+    uint8_t near[ParticleSlots<W>::value];
+    uint8_t count = 0;
+    const P* p = &WorldAccess::particle(world, 0);
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+      if (!isTarget(*p)) continue;
+      const S at = p->position.*along;
+      if (positive ? !(at - p->radius > limit)
+                   : !(at + p->radius < negativeLimit)) {
+        near[count++] = i;
       }
-    } else {
-      const S negativeLimit = -limit;
-      for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
-        if (!isTarget(*p)) continue;
-        const S side = p->position.*along + p->radius;
-        if (!(side < negativeLimit)) {
-          touch(world, normal, along, false, i, offset + side, source);
-        }
+    }
+    for (uint8_t k = 0; k < count; ++k) {
+      const uint8_t i = near[k];
+      const P& q = WorldAccess::particle(world, i);
+      const S side = positive ? q.position.*along - q.radius
+                              : q.position.*along + q.radius;
+      touch(world, normal, along, positive, i,
+            positive ? offset - side : offset + side, source);
+    }
+  }
+
+  // The 2 Dim walls of a box in one pass over the particles: each one's
+  // coordinates and radius are read once for all walls (four planes cost
+  // four passes). The pass only tests and notes which walls each particle
+  // is within reach of; the contacts are made after it, wall by wall in
+  // the order of separate axis planes (x low, x high, y low, ...), so that
+  // a box makes the same contacts in the same order as its planes would.
+  template <class W>
+  static void generateBox(W& world, typename W::ConstraintSlot& slot,
+                          uint8_t source) {
+    typedef Vec<S, Dim> V;
+    typedef Particle<S, Dim> P;
+    const BoxParams<S, Dim>& box = InSlot::of<BoxParams<S, Dim> >(slot);
+    const S margin = W::contactMargin();
+    V lowLimit, highLimit;  // within reach: x - r <= low + margin, ...
+    for (uint8_t k = 0; k < W::kDimensions; ++k) {
+      lowLimit[k] = box.low[k] + margin;
+      highLimit[k] = box.high[k] - margin;
+    }
+    uint8_t near[ParticleSlots<W>::value];
+    // walls: bit 2k for the low wall of axis k, 2k + 1 for its high wall.
+    uint8_t walls[ParticleSlots<W>::value];
+    uint8_t count = 0, touched = 0;
+    const P* p = &WorldAccess::particle(world, 0);
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+      if (!isTarget(*p)) continue;
+      const S r = p->radius;
+      uint8_t bits = 0;
+      if (!(p->position.x - r > lowLimit.x)) bits |= 1;
+      if (!(p->position.x + r < highLimit.x)) bits |= 2;
+      if (!(p->position.y - r > lowLimit.y)) bits |= 4;
+      if (!(p->position.y + r < highLimit.y)) bits |= 8;
+      if (W::kDimensions == 3) {
+        if (!(p->position[2] - r > lowLimit[2])) bits |= 16;
+        if (!(p->position[2] + r < highLimit[2])) bits |= 32;
+      }
+      if (bits != 0) {
+        near[count] = i;
+        walls[count] = bits;
+        touched |= bits;
+        ++count;
+      }
+    }
+    for (uint8_t wall = 0; wall < 2 * W::kDimensions; ++wall) {
+      const uint8_t bit = uint8_t(1u << wall);
+      if ((touched & bit) == 0) continue;  // no particle near this wall
+      const uint8_t axis = uint8_t(wall >> 1);
+      const bool positive = (wall & 1) == 0;
+      S V::*const along = detail::AxisMember<V>::of(axis);
+      V normal;
+      normal.*along = positive ? S(1) : S(-1);
+      // As an axis plane's: offset = low, or minus high.
+      const S offset = positive ? box.low.*along : -(box.high.*along);
+      for (uint8_t k = 0; k < count; ++k) {
+        if ((walls[k] & bit) == 0) continue;
+        const P& q = WorldAccess::particle(world, near[k]);
+        const S side = positive ? q.position.*along - q.radius
+                                : q.position.*along + q.radius;
+        touch(world, normal, along, positive, near[k],
+              positive ? offset - side : offset + side, source);
       }
     }
   }
 
  private:
+  // The particles' count as an array size, at least one entry: ISO C++ has
+  // no zero-size arrays.
+  template <class W>
+  struct ParticleSlots {
+    static const uint8_t value =
+        W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
+  };
+
   // A particle within the margin of an axis plane: the separating velocity
   // and the acceleration along the normal are that coordinate of the
   // velocity and of the acceleration, with the normal's sign (exactly what
@@ -136,7 +220,9 @@ struct PlaneConstraint {
     const S separating = positive ? velocity : -velocity;
     const S acceleration =
         p.acceleration.*along + WorldAccess::uniformComponent(world, along);
-    if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) return;
+    if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {
+      return;
+    }
     WorldAccess::recordContact(world, i, kNoIndex, normal, penetration,
                                separating, source);
   }

@@ -2,11 +2,14 @@
 // collisions of small balls (kinetic energy kept), sixteen elastic balls in
 // a box, a pile at rest (sleeping), a ball dropped on a sleeping pile (it
 // wakes, and reacts as an awake one), tunnelling at and past the speed limit
-// of Contacts/Collisions.hpp, a contact pool too small for a pile, and
-// Newton's cradle.
+// of Contacts/Collisions.hpp, a contact pool too small for a pile,
+// Newton's cradle, the bouncing balls falling asleep in coarse fixed
+// point, swept contacts (fast pairs that pass through each other within a
+// step), and a box against its planes.
 //
 // Used by extras/test/ContactsRestTest, ContactsMotionTest and CradleTest (Q16.16)
-// and their Float twins: every scene runs from here, the sketches assert on
+// and their Float twins, ContactsSleepQ24Test, and ContactsSwept*Test and
+// ContactsBox*Test: every scene runs from here, the sketches assert on
 // what it measures. Not included by TinyParticle.h: include
 // <TinyParticle/Testing/ContactChecks.hpp> after it.
 #pragma once
@@ -248,6 +251,53 @@ struct ContactChecks {
     return true;
   }
 
+  // ---- Sleeping in coarse fixed point -------------------------------------
+
+  struct SettleResult {
+    uint16_t steps;   // steps until every ball slept (0: not within the run)
+    float hanging;    // m, the largest gap under a sleeping ball
+    float deepest;    // m, the deepest overlap once all sleep
+    uint16_t error;   // world.error()
+  };
+
+  // Scenes/BouncingBalls.hpp (16 balls, sleeping on) at 1/256 s for up to
+  // `seconds`, until every ball sleeps. Then, for each ball, the gap to
+  // what holds it up: the floor, or the nearest ball whose centre is
+  // lower; the largest of those gaps, and the deepest overlap.
+  static SettleResult settleBalls(uint8_t seconds) {
+    // 24 contacts: the most it asks for is below that (a drop would be
+    // flagged), and the sketch keeps RAM for the stack.
+    static BallsWorld<S, 2, 16, 24> w;  // does not fit on the Nano's stack
+    w.clear();
+    buildBouncingBalls(w, 16);
+    SettleResult r = {0, 0, 0, 0};
+    for (uint16_t i = 1; i <= uint16_t(seconds) * 256u; ++i) {
+      w.step(S(1.0 / 256));
+      if (asleepCount(w) == 16) {
+        r.steps = i;
+        break;
+      }
+    }
+    for (uint8_t i = 0; i < 16; ++i) {
+      const typename RowWorld::ParticleType& p = w.particleAt(i);
+      const float x = p.position.x.toFloat(), y = p.position.y.toFloat();
+      const float r1 = p.radius.toFloat();
+      float gap = y - r1;  // above the floor
+      for (uint8_t j = 0; j < 16; ++j) {
+        const typename RowWorld::ParticleType& q = w.particleAt(j);
+        const float qy = q.position.y.toFloat();
+        if (j == i || !(qy < y)) continue;
+        const float dx = x - q.position.x.toFloat(), dy = y - qy;
+        const float g = ::sqrt(dx * dx + dy * dy) - r1 - q.radius.toFloat();
+        if (g < gap) gap = g;
+      }
+      if (gap > r.hanging) r.hanging = gap;
+    }
+    r.deepest = deepestOverlap(w);
+    r.error = w.error();
+    return r;
+  }
+
   // ---- Tunnelling ---------------------------------------------------------
 
   // Two balls of radius 2 cm meet head-on, each at `factor` times the
@@ -264,6 +314,148 @@ struct ContactChecks {
     for (uint16_t i = 0; i < 64; ++i) w.step(S(1.0 / 256));
     *error = w.error();
     return w.particle(a)->position.x < w.particle(b)->position.x;
+  }
+
+  // ---- Swept contacts -----------------------------------------------------
+
+  struct SweptResult {
+    bool ordered;      // the first ball is still left of the second
+    float energy;      // kinetic energy after over before
+    float struckSpeed; // m/s, the second ball's speed after
+    float struckAngle; // degrees, its direction from the x axis
+    uint16_t error;    // world.error()
+  };
+
+  // Two balls of radius 2 cm and 0.1 kg, restitution 1, swept collisions
+  // (World::addSweptCollisions), no gravity: the first from (0.1, 0.5) at
+  // `speedA` m/s along x, the second from (0.9037, 0.5 + offset) at
+  // `speedB` m/s against it; 64 steps of 1/256 s.
+  static SweptResult swept(float speedA, float speedB, float offset) {
+    PairWorld w;
+    ParticleId a = w.addParticle(PV(0.1, 0.5), S(0.1), S(0.02));
+    ParticleId b = w.addParticle(PV(0.9037, 0.5 + offset), S(0.1), S(0.02));
+    w.particle(a)->velocity.x = S(speedA);
+    w.particle(b)->velocity.x = S(-speedB);
+    w.addSweptCollisions(S(1));
+    const float before = kineticEnergy2(w);
+    for (uint16_t i = 0; i < 64; ++i) w.step(S(1.0 / 256));
+    SweptResult r;
+    r.ordered = w.particle(a)->position.x < w.particle(b)->position.x;
+    r.energy = kineticEnergy2(w) / before;
+    const float vx = w.particle(b)->velocity.x.toFloat();
+    const float vy = w.particle(b)->velocity.y.toFloat();
+    r.struckSpeed = ::sqrt(vx * vx + vy * vy);
+    r.struckAngle = float(::atan2(vy, vx) * (180.0 / 3.14159265358979));
+    r.error = w.error();
+    return r;
+  }
+
+  // The bouncing balls (8 of them, Scenes/BouncingBalls.hpp) for 2 s at
+  // 1/256 s, all slower than the speed limit: the x + y of every ball at
+  // the end, summed, with plain or swept collisions.
+  static float ballsChecksum(bool swept) {
+    static BallsWorld<S, 2, 8> w;  // does not fit on the Nano's stack
+    w.clear();
+    typename RowWorld::Vec low, high(1.0, 1.0);
+    w.addBox(low, high, S(0.8));
+    w.addGravity();
+    if (swept) {
+      w.addSweptCollisions(S(0.8));
+    } else {
+      w.addCollisions(S(0.8));
+    }
+    SceneRandom random(2024);
+    for (uint8_t i = 0; i < 8; ++i) {
+      typename RowWorld::Vec at(0.25 * (i % 3 + 1), 0.25 * (i / 3 + 1));
+      ParticleId id = w.addParticle(at, S(0.1), S(0.03));
+      w.particle(id)->velocity.x = S(0.7 / 128) * S(int(random.symmetric(128)));
+      w.particle(id)->velocity.y = S(0.7 / 128) * S(int(random.symmetric(128)));
+    }
+    for (uint16_t i = 0; i < 2 * 256; ++i) w.step(S(1.0 / 256));
+    float sum = 0;
+    for (uint8_t i = 0; i < 8; ++i) {
+      sum += w.particleAt(i).position.x.toFloat() +
+             w.particleAt(i).position.y.toFloat();
+    }
+    return sum;
+  }
+
+  // ---- A box against its planes -------------------------------------------
+
+  // Eight balls (r = 3 cm, 0.1 kg) thrown about a 1 m box under gravity
+  // for 2 s at 1/256 s, restitution 0.8, in 2D or 3D: the box as addBox
+  // (one pass for all walls) or as its 2 Dim axis planes, added in the
+  // box's order (x low, x high, y low, ...). Returns the x + y (+ z) of
+  // every ball at the end, summed, and in `touched` the walls that made a
+  // contact at some step (bit 2k: the low wall of axis k, 2k + 1: the
+  // high one), whether two walls of one ball made contacts in one step (a
+  // corner) in bit 7, and in bit 6 whether the contact pool ran full.
+  template <uint8_t Dim>
+  static float boxChecksum(bool asBox, uint8_t* touched) {
+    typedef World<S, Dim, 8, 1, 2 * Dim + 1, 16> BoxWorld;
+    typedef typename BoxWorld::Vec V;
+    static BoxWorld w;  // does not fit on the Nano's stack
+    w.clear();
+    V low, high;
+    for (uint8_t k = 0; k < Dim; ++k) high[k] = S(1);
+    if (asBox) {
+      w.addBox(low, high, S(0.8));
+    } else {
+      for (uint8_t k = 0; k < Dim; ++k) {
+        V normal;
+        normal[k] = S(1);
+        w.addPlane(normal, S(), S(0.8));  // x_k >= 0
+        normal[k] = S(-1);
+        w.addPlane(normal, S(-1), S(0.8));  // x_k <= 1
+      }
+    }
+    w.addGravity();
+    w.addCollisions(S(0.8));
+    SceneRandom random(7);
+    for (uint8_t i = 0; i < 8; ++i) {
+      V at;
+      at.x = S(0.2 + 0.2 * (i % 4));
+      at.y = S(0.3 + 0.4 * (i / 4));
+      if (Dim == 3) at[2] = S(0.5);
+      // The first one flies into the corner at the origin (two or three
+      // walls at once).
+      if (i == 0) at = V();
+      for (uint8_t k = 0; i == 0 && k < Dim; ++k) at[k] = S(0.04);
+      ParticleId id = w.addParticle(at, S(0.1), S(0.03));
+      for (uint8_t k = 0; k < Dim; ++k) {
+        w.particle(id)->velocity[k] =
+            i == 0 ? S(-1) : S(4.0 / 128) * S(int(random.symmetric(128)));
+      }
+    }
+    *touched = 0;
+    for (uint16_t i = 0; i < 2 * 256; ++i) {
+      w.step(S(1.0 / 256));
+      uint8_t wallsOf[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+      for (uint8_t c = 0; c < w.contactCount(); ++c) {
+        const typename BoxWorld::ContactType& contact = WorldAccess::contact(w, c);
+        if (contact.b != kNoIndex) continue;  // a ball, not a wall
+        for (uint8_t k = 0; k < Dim; ++k) {
+          const uint8_t lowWall = uint8_t(1u << (2 * k));
+          if (contact.normal[k] == S(1)) wallsOf[contact.a] |= lowWall;
+          if (contact.normal[k] == S(-1)) {
+            wallsOf[contact.a] |= uint8_t(lowWall << 1);
+          }
+        }
+      }
+      for (uint8_t b = 0; b < 8; ++b) {
+        *touched |= wallsOf[b];
+        if (wallsOf[b] & (wallsOf[b] - 1)) *touched |= 0x80;  // two bits
+      }
+    }
+    // A full contact pool would drop contacts: flagged as bit 6.
+    if (w.error() & WorldError::kContactsDropped) *touched |= 0x40;
+    float sum = 0;
+    for (uint8_t i = 0; i < 8; ++i) {
+      for (uint8_t k = 0; k < Dim; ++k) {
+        sum += w.particleAt(i).position[k].toFloat();
+      }
+    }
+    return sum;
   }
 
   // ---- Newton's cradle ----------------------------------------------------

@@ -4,8 +4,13 @@
 // The world is one island: it falls asleep as a whole and wakes as a whole.
 // Before each step moves anything, every movable particle is looked at once.
 // When each one's speed along every axis has stayed within
-// World::sleepSpeed() (1/64 m/s), with no force on it, for kRestSteps steps
-// in a row, they all fall asleep: their velocities become exactly zero. A
+// World::sleepSpeed() (1/64 m/s), or so low that the step moves it by
+// nothing at all, with no force on it, for kRestSteps steps in a row, they
+// all fall asleep: their velocities become exactly zero. (The second case
+// is coarse fixed point: in Q24.8 at dt = 1/256 s a velocity below 0.5 m/s
+// moves a particle by less than half a unit, 1/256 m, so it stays where it
+// is. Without it such a particle kept its velocity and its place forever,
+// and a Q24.8 pile never slept.) A
 // velocity or a force given to a sleeper since (by the sketch, or a force
 // generator) wakes them all.
 // A sleeping particle is not integrated and makes no contact with planes or
@@ -25,6 +30,9 @@
 
 #include <stdint.h>
 
+#include "../Configuration.hpp"
+#include "../Math/Scaler.hpp"
+#include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
 #include "../Core/Access.hpp"
 
@@ -91,9 +99,9 @@ struct Sleeping {
   // asleep.
   static const uint8_t kRestSteps = 31;
 
-  // Returns true when every movable particle sleeps: the step has nothing
-  // to do.
-  static bool settle(W& world) {
+  // Returns true when every movable particle sleeps: the step (of dt) has
+  // nothing to do.
+  static bool settle(W& world, S dt) {
     const S limit = W::sleepSpeed();
     // Without sleepers the first particle that moves ends the look (in a
     // busy scene, usually the first one); sleepers are all looked at, for
@@ -112,7 +120,8 @@ struct Sleeping {
         continue;
       }
       awake = true;
-      if (pushed || !isSlow(p.velocity, limit)) {
+      if (pushed ||
+          !(isSlow(p.velocity, limit) || isStuck(p.velocity, dt))) {
         still = false;
         if (!sleepers) break;
       }
@@ -136,6 +145,21 @@ struct Sleeping {
   }
 
  private:
+  // Moved by nothing in a step: v dt rounds to zero on every axis, as the
+  // integrator rounds it (World::move()). Out of line, dt by reference:
+  // asked only of a particle faster than the sleep speed, it leaves the
+  // look's loop its registers.
+  TINYPARTICLE_NOINLINE static bool isStuck(const Vec<S, 2>& v,
+                                            const S& dt) {
+    const Scaler<S> byDt(dt);
+    return detail::isZero(byDt(v.x)) && detail::isZero(byDt(v.y));
+  }
+  TINYPARTICLE_NOINLINE static bool isStuck(const Vec<S, 3>& v,
+                                            const S& dt) {
+    const Scaler<S> byDt(dt);
+    return detail::isZero(byDt(v.x)) && detail::isZero(byDt(v.y)) &&
+           detail::isZero(byDt(v.z));
+  }
   static bool isNull(const Vec<S, 2>& v) {
     return detail::isZero(v.x) && detail::isZero(v.y);
   }

@@ -52,6 +52,7 @@ template <typename S, uint8_t Dim>
 struct ConstraintParamList {
   typedef ParamUnion<LinkParams<S, Dim>,  // rods and cables
                      PlaneConstraint<S, Dim>,
+                     BoxParams<S, Dim>,
                      CollisionParams,
                      SketchGenerator>
       Type;
@@ -96,6 +97,8 @@ struct ConstraintSlot {
   constexpr ConstraintSlot()
       : generate(nullptr), a(0), b(0), generation(0), kind(0), restitution(),
         params() {}
+  static_assert(sizeof(BoxParams<S, Dim>) <= sizeof(LinkParams<S, Dim>),
+                "a box's parameters must not make every constraint slot larger");
   bool inUse() const { return generate != nullptr; }
   template <class C>
   bool holds() const {

@@ -78,7 +78,8 @@ class World
                    const Scaler<S>&, S),
           S, (kConstraints > 0)>,
       private detail::SleepState<
-          bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&),
+          bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
+                   S),
           (kConstraints > 0)> {
   static_assert(IsScalar<S>::value, TINYPARTICLE_SCALAR_MESSAGE);
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
@@ -110,7 +111,8 @@ class World
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
-  typedef detail::SleepState<bool (*)(World&), (kConstraints > 0)> SleepStore;
+  typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
+      SleepStore;
   typedef GravityForce<S, Dim> GravityType;
   // Generators and the renderer reach the slots and the step's uniform
   // acceleration through it (Core/Access.hpp).
@@ -438,15 +440,17 @@ class World
   }
 
   // The walls of the box low <= x <= high (2 Dim axis-aligned planes, facing
-  // inwards). False if the pool could not take them all.
+  // inwards), in one constraint slot: one pass over the particles for all
+  // walls. False if the pool has no free slot.
   bool addBox(const Vec& low, const Vec& high, S restitution) {
     requireContacts();
-    bool ok = true;
-    for (uint8_t k = 0; k < Dim; ++k) {
-      ok = addAxisPlane(k, true, low[k], restitution).isValid() && ok;
-      ok = addAxisPlane(k, false, high[k], restitution).isValid() && ok;
-    }
-    return ok;
+    BoxParams<S, Dim> box;
+    box.low = low;
+    box.high = high;
+    return placeConstraint(
+               kAllIndex, kNoIndex, restitution, box,
+               &PlaneConstraint<S, Dim>::template generateBox<World>)
+        .isValid();
   }
 
   // Collisions between all pairs of colliding particles.
@@ -455,6 +459,15 @@ class World
     return placeConstraint(kAllIndex, kNoIndex, restitution,
                            CollisionParams(),
                            &CollisionConstraint<World>::generate);
+  }
+  // The same, and pairs that pass through each other within a step are
+  // found at any speed (swept contacts, Contacts/Collisions.hpp); costs more
+  // per step. Use one of the two.
+  ConstraintId addSweptCollisions(S restitution) {
+    requireContacts();
+    return placeConstraint(kAllIndex, kNoIndex, restitution,
+                           CollisionParams(),
+                           &CollisionConstraint<World>::generateSwept);
   }
 
   // A contact generator of the sketch's own (extras/doc/design.md, "Adding
@@ -536,7 +549,7 @@ class World
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
-    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this)) {
+    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, dt)) {
       mContactCount = 0;
       mStats = StepStats();
       TINYPARTICLE_PROFILE_END(kProfileStep);
