@@ -122,6 +122,7 @@ volatile Stored gSink;
 inline void build() {
   ParticleId a = gWorld.addParticle(vectorAt(kPositionA), input(kMass),
                                     input(kRadius));
+  (void)a;  // its first use comes with the spring rung
   gWorld.addGravity();
 #if FEATURE >= 2
   gWorld.addDrag(input(kDrag1), input(kDrag2));

@@ -14,6 +14,12 @@
                              printed as a table and written
                              to DIR/scenes.csv (a fresh temporary folder by
                              default); the committed outputs are left alone
+    bench.py --baseline REV [--scenes ...] [--only ...]
+                             also run the scene benchmark of commit REV (in a
+                             temporary git worktree, removed afterwards) and
+                             add its cycles beside this tree's in scenes.csv
+                             and scenes.md (cycles_baseline, cycles_change_pct,
+                             baseline; see tools/baseline.py)
 
 Runs on the simulated Nano (simavr) through extras/scripts/nano-build and
 extras/scripts/simavr-run, two at a time by default (--jobs). Raw UART logs
@@ -29,6 +35,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
+import baseline  # noqa: E402
 import memory  # noqa: E402
 import ops  # noqa: E402
 import report  # noqa: E402
@@ -91,10 +98,17 @@ def run_memory(out_dir, build_root, jobs, quick):
     return rows
 
 
-def run_scenes(out_dir, build_root, jobs, quick, names=None):
+def run_scenes(out_dir, build_root, jobs, quick, names=None, base=None):
+    """base: a commit whose cycles go beside these (bench.py --baseline)."""
+    commit = baseline.commit_of(base) if base else None  # fail before measuring
     rows, timeline = scenes.run(build_root, jobs, quick, names)
+    columns = scenes.COLUMNS
+    if commit:
+        baseline.join(rows, baseline.scene_rows(
+            commit, names or baseline.names_of(rows), jobs), commit)
+        columns = scenes.COLUMNS + baseline.COLUMNS
     path = os.path.join(out_dir, "scenes.csv")
-    write_csv(path, scenes.COLUMNS, rows)
+    write_csv(path, columns, rows)
     log("measured %s (%d rows)" % (name_of(path), len(rows)))
     if timeline:
         path = os.path.join(out_dir, "timeline.csv")
@@ -162,7 +176,7 @@ def check_outputs(out_dir, stages):
 STAGES = ["ops", "scenes", "memory", "report"]
 
 
-def measure_scenes(names, out, jobs):
+def measure_scenes(names, out, jobs, base=None):
     """Some scenes alone: a table on stdout and scenes.csv in `out` (never
     the committed folder: a partial CSV there would disagree with the
     tables made from it)."""
@@ -174,12 +188,16 @@ def measure_scenes(names, out, jobs):
     os.makedirs(out_dir, exist_ok=True)
     os.makedirs(build_root, exist_ok=True)
     try:
-        rows = run_scenes(out_dir, build_root, jobs, False, names)
+        rows = run_scenes(out_dir, build_root, jobs, False, names, base)
     except runner.BenchError as e:
         log("FAILED: %s" % e)
         return 1
     shown = ["scene", "scalar", "dim", "n", "dt_ms", "cycles_per_step",
              "max_link_err", "max_energy_err", "ref_max_energy_err"]
+    if base:
+        shown[6:] = ["cycles_baseline", "cycles_change_pct"]
+        report.write(os.path.join(out_dir, "scenes.md"), report.scenes_markdown(
+            rows, runner.toolchain(), False))
     print(" ".join("%-9s" % c[:9] for c in shown))
     for r in rows:
         print(" ".join("%-9s" % r[c] for c in shown))
@@ -197,15 +215,24 @@ def main():
     ap.add_argument("--scenes", help="comma-separated scene names (lever, "
                     "chain, balls:16 for one count, ...): measure only these, "
                     "outside the committed outputs")
+    ap.add_argument("--baseline", metavar="REV", help="a commit (hash, branch, "
+                    "tag) whose scene benchmark runs beside this tree's: its "
+                    "cycles per step go beside these in scenes.csv and "
+                    "scenes.md")
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
+    if args.baseline and args.quick:
+        ap.error("--baseline does not go with --quick")
     if args.scenes:
-        return measure_scenes(args.scenes.split(","), args.out, args.jobs)
+        return measure_scenes(args.scenes.split(","), args.out, args.jobs,
+                              args.baseline)
 
     stages = args.only.split(",") if args.only else STAGES
     for s in stages:
         if s not in STAGES:
             ap.error("unknown stage %r" % s)
+    if args.baseline and "scenes" not in stages:
+        ap.error("--baseline needs the scenes stage")
     temporary = args.quick and not args.out
     if args.quick:
         out_dir = args.out or tempfile.mkdtemp(prefix="tinyparticle-bench-")
@@ -228,7 +255,8 @@ def main():
             run_ops(staging, build_root, args.jobs, args.quick)
         if "scenes" in stages:
             run_scenes(staging, build_root, args.jobs, args.quick,
-                       args.scenes.split(",") if args.scenes else None)
+                       args.scenes.split(",") if args.scenes else None,
+                       args.baseline)
         if "memory" in stages:
             run_memory(staging, build_root, args.jobs, args.quick)
         for name in sorted(os.listdir(staging)):

@@ -1,15 +1,27 @@
-"""The memory ladder: flash, RAM and cycles per step of MemoryBenchmark's rungs.
+"""The memory ladder: flash, RAM and cycles per step of MemoryBenchmark's rungs,
+then whole scenes and the examples beside it.
 
 Each rung is built twice: as is, for its flash and RAM (avr-size of the ELF,
 as nano-build reports them), and with BENCH_CYCLES=1, which adds Serial and the
 cycle counter and prints the mean cycles of a step; that build is run in simavr.
+The scenes (MemoryBenchmark with SCENE=n: the lever alone) are built and run
+the same way. The examples are not built here: their rows are the figures
+of their own Nano builds in extras/sizes/nano.csv (`make sizes`).
+
+The kind column says which a row is: rung, scene or example. Beside a row
+stand the goals of issue 12 where it names one (GOALS), NA elsewhere:
+flash_goal for the whole sketch, flash_delta_goal for what a rung adds to
+the rung below (the first rung: to the empty sketch), ram_goal for its
+static RAM.
 """
+import csv
 import os
 
 import runner
-from runner import BENCH, log
+from runner import BENCH, REPO, log
 
 SKETCH = os.path.join(BENCH, "MemoryBenchmark")
+EXAMPLE_SIZES = os.path.join(REPO, "extras", "sizes", "nano.csv")
 
 # In ladder order; see MemoryBenchmark/Ladder.h.
 FEATURES = [
@@ -31,12 +43,54 @@ FEATURES = [
 SCALARS = [(1, "Q16.16"), (2, "float")]
 DIMS = [2, 3]
 
+# Whole scenes beside the ladder: (row name, MemoryBenchmark's SCENE, dim).
+SCENES = [("lever scene", 1, 2)]
+
 COLUMNS = ["feature", "scalar", "dim", "flash", "ram", "flash_delta",
-           "ram_delta", "cycles_per_step"]
+           "ram_delta", "cycles_per_step", "kind", "flash_goal",
+           "flash_delta_goal", "ram_goal"]
+GOAL_COLUMNS = COLUMNS[-3:]
+
+# The goals of issue 12 (bytes, Nano), by (kind, feature, scalar, dim); the
+# examples' by (kind, name). HapticLever's is with the Servo stand-in.
+GOALS = {
+    ("rung", "world + 1 particle + gravity", "Q16.16", "2"): {
+        "flash_delta_goal": 1500},
+    ("rung", "rod", "Q16.16", "2"): {"flash_delta_goal": 2000},
+    ("scene", "lever scene", "Q16.16", "2"): {"flash_goal": 5000},
+    ("scene", "lever scene", "float", "2"): {"flash_goal": 6000},
+    ("example", "HapticLever"): {"flash_goal": 11000},
+    ("example", "BouncingBalls"): {"flash_goal": 12000, "ram_goal": 1200},
+}
+
+
+def with_goals(row):
+    """row with its kind's goal columns (NA where the issue names none)."""
+    key = (row["kind"], row["feature"]) if row["kind"] == "example" else (
+        row["kind"], row["feature"], row["scalar"], row["dim"])
+    goals = GOALS.get(key, {})
+    for c in GOAL_COLUMNS:
+        row[c] = str(goals[c]) if c in goals else "NA"
+    return row
+
+
+def example_rows():
+    """One row per example, from extras/sizes/nano.csv (no build here)."""
+    if not os.path.exists(EXAMPLE_SIZES):
+        log("%s is missing: no example rows (run `make sizes`)" % EXAMPLE_SIZES)
+        return []
+    with open(EXAMPLE_SIZES, newline="") as f:
+        sizes = list(csv.DictReader(f))
+    return [with_goals({
+        "feature": r["example"], "scalar": "NA", "dim": "NA",
+        "flash": r["flash"], "ram": r["ram"], "flash_delta": "NA",
+        "ram_delta": "NA", "cycles_per_step": "NA", "kind": "example"})
+        for r in sizes]
 
 
 def run(build_root, jobs, quick=False):
-    """Rows of memory.csv. quick: the first three rungs, Q16.16 2D only.
+    """Rows of memory.csv. quick: the first three rungs and the scenes,
+    Q16.16 2D only.
 
     The ladder is cumulative, so its last rungs may not fit a Nano's
     30,720 B: they are built with the builder's limit raised to the chip's
@@ -49,13 +103,18 @@ def run(build_root, jobs, quick=False):
     logs = os.path.join(build_root, "logs")
     os.makedirs(logs, exist_ok=True)
 
+    # A rung is (scalar, dim, feature); a scene (scalar, dim, "S<scene>").
+    def defines(s, d, f):
+        if isinstance(f, str):
+            return [("SCENE", f[1:]), ("SCALAR", s), ("DIM", d)]
+        return [("FEATURE", f), ("SCALAR", s), ("DIM", d)]
+
     def size_task(s, d, f):
         def go():
-            name = "mem-s%d-d%d-f%d" % (s, d, f)
+            name = "mem-s%d-d%d-f%s" % (s, d, f)
             try:
                 _, flash, ram = runner.nano_build(
-                    SKETCH, os.path.join(build_root, name),
-                    [("FEATURE", f), ("SCALAR", s), ("DIM", d)])
+                    SKETCH, os.path.join(build_root, name), defines(s, d, f))
             except runner.BenchError as e:
                 # The whole ladder may pass even the chip's 32 KB: NA.
                 if "will not fit" not in str(e) and "overflowed" not in str(e):
@@ -69,12 +128,11 @@ def run(build_root, jobs, quick=False):
         def go():
             if f == 0:
                 return None
-            name = "mem-s%d-d%d-f%d-cycles" % (s, d, f)
+            name = "mem-s%d-d%d-f%s-cycles" % (s, d, f)
             try:
                 elf, _, _ = runner.nano_build(
                     SKETCH, os.path.join(build_root, name),
-                    [("FEATURE", f), ("SCALAR", s), ("DIM", d),
-                     ("BENCH_CYCLES", 1)])
+                    defines(s, d, f) + [("BENCH_CYCLES", 1)])
             except runner.BenchError as e:
                 # With Serial and the counter added, the last rungs may pass
                 # the ATmega328P's 32 KB: no cycle figure (NA) for them.
@@ -95,6 +153,8 @@ def run(build_root, jobs, quick=False):
         return go
 
     combos = [(s, d, f) for s, _ in scalars for d in dims for f in features]
+    combos += [(s, d, "S%d" % scene) for s, _ in scalars
+               for _, scene, d in SCENES]
     tasks = [size_task(*c) for c in combos] + [cycle_task(*c) for c in combos]
     log("MemoryBenchmark: %d builds" % (len(combos) + sum(1 for c in combos if c[2])))
     results = runner.parallel(tasks, jobs)
@@ -109,13 +169,25 @@ def run(build_root, jobs, quick=False):
                 flash, ram = sizes[(s, d, f)]
                 c = cycles[(s, d, f)]
                 known = flash is not None and prev and prev[0] is not None
-                rows.append({
+                rows.append(with_goals({
                     "feature": FEATURES[f], "scalar": scalar, "dim": str(d),
                     "flash": str(flash) if flash is not None else "NA",
                     "ram": str(ram) if ram is not None else "NA",
                     "flash_delta": str(flash - prev[0]) if known else "NA",
                     "ram_delta": str(ram - prev[1]) if known else "NA",
                     "cycles_per_step": str(c) if c is not None else "NA",
-                })
+                    "kind": "rung",
+                }))
                 prev = (flash, ram)
-    return rows
+    for name, scene, d in SCENES:
+        for s, scalar in scalars:
+            flash, ram = sizes[(s, d, "S%d" % scene)]
+            c = cycles[(s, d, "S%d" % scene)]
+            rows.append(with_goals({
+                "feature": name, "scalar": scalar, "dim": str(d),
+                "flash": str(flash) if flash is not None else "NA",
+                "ram": str(ram) if ram is not None else "NA",
+                "flash_delta": "NA", "ram_delta": "NA",
+                "cycles_per_step": str(c) if c is not None else "NA",
+                "kind": "scene"}))
+    return rows + example_rows()

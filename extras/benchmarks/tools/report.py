@@ -216,6 +216,7 @@ def scenes_markdown(rows, tools, quick):
     lines += md_table(["scene"] + scalars, [
         [l] + [fmt_cycles(at[(l, s)]["cycles_per_step"]) if (l, s) in at else ""
                for s in scalars] for l in labels])
+    lines += baseline_markdown(rows)
     lines += links_markdown(rows, "")
     lines += ["", "## All figures", ""]
     lines += md_table(
@@ -232,6 +233,46 @@ def scenes_markdown(rows, tools, quick):
          for r in rows])
     lines.append("")
     return "\n".join(lines)
+
+
+# Issue 12: no scene more than this much slower than before the size work.
+SLOWER_LIMIT_PCT = 3.0
+
+
+def baseline_markdown(rows):
+    """Cycles per step beside those of the baseline commit (bench.py
+    --baseline), when scenes.csv has them."""
+    rows = [r for r in rows if r.get("baseline")]
+    if not rows:
+        return []
+    commits = []
+    for r in rows:
+        if r["baseline"] not in commits:
+            commits.append(r["baseline"])
+    changes = [num(r["cycles_change_pct"]) for r in rows]
+    changes = [c for c in changes if c is not None]
+    slower = sum(1 for c in changes if c > SLOWER_LIMIT_PCT)
+    lines = ["", "## Cycles per step against commit %s" % ", ".join(commits), "",
+             "The same rows measured by the scene benchmark of commit %s, run "
+             "from its own tree (`tools/bench.py --baseline`); change = "
+             "(cycles - baseline) / baseline, positive is slower. Goal "
+             "(issue 12): no row more than %g %% slower. Here %d of %d rows "
+             "with both figures are more than %g %% slower; the largest "
+             "change is %s %%." % (
+                 ", ".join(commits), SLOWER_LIMIT_PCT, slower, len(changes),
+                 SLOWER_LIMIT_PCT,
+                 "%+.1f" % max(changes) if changes else "NA"),
+             ""]
+    lines += md_table(
+        ["scene", "scalar", "dt (s)", "cycles/step", "baseline", "change (%)"],
+        [[scene_label(r), r["scalar"], dt_label(r["dt_ms"]),
+          fmt_cycles(r["cycles_per_step"]), fmt_cycles(r["cycles_baseline"]),
+          "NA" if num(r["cycles_change_pct"]) is None else
+          "%+.1f" % num(r["cycles_change_pct"]) + (
+              " (over %g %%)" % SLOWER_LIMIT_PCT
+              if num(r["cycles_change_pct"]) > SLOWER_LIMIT_PCT else "")]
+         for r in rows])
+    return lines
 
 
 def timeline_plot(out_dir, tmp):
@@ -484,6 +525,16 @@ def fmt_int(text, signed=False):
     return ("{:+,}" if signed else "{:,}").format(int(v))
 
 
+def goal_cell(value, goal):
+    """A goal of issue 12 beside the figure it bounds: "<= 5,000 (met)"."""
+    g, v = num(goal), num(value)
+    if g is None:
+        return ""
+    if v is None:
+        return "<= %s" % fmt_int(goal)
+    return "<= %s (%s)" % (fmt_int(goal), "met" if v <= g else "not met")
+
+
 def memory_markdown(rows, tools, quick):
     lines = ["# Memory ladder: what each engine feature costs", ""]
     lines += banner("memory.csv", tools, quick)
@@ -495,23 +546,52 @@ def memory_markdown(rows, tools, quick):
         "Arduino IDE reports them (RAM before the stack); `+` columns are the "
         "change from the rung above. Cycles per step: mean over 256 steps of "
         "1/256 s, measured in a separate build of the same rung that adds "
-        "Serial and the cycle counter.",
+        "Serial and the cycle counter. Goals are those of issue 12 (where it "
+        "names one): for a rung, what it adds to the rung above (the first "
+        "rung: to the empty sketch).",
         ""]
+    ladder = [r for r in rows if r.get("kind", "rung") == "rung"]
+    others = [r for r in rows if r.get("kind", "rung") != "rung"]
     combos = []
-    for r in rows:
+    for r in ladder:
         c = (r["scalar"], r["dim"])
         if c not in combos:
             combos.append(c)
     for scalar, dim in combos:
         lines += ["## %s, %sD" % (scalar, dim), ""]
-        sel = [r for r in rows if r["scalar"] == scalar and r["dim"] == dim]
+        sel = [r for r in ladder if r["scalar"] == scalar and r["dim"] == dim]
+        goals = any(num(r.get("flash_delta_goal")) is not None for r in sel)
         lines += md_table(
-            ["feature", "flash", "+flash", "RAM", "+RAM", "cycles/step"],
+            ["feature", "flash", "+flash"] + (["goal (+flash)"] if goals else []) +
+            ["RAM", "+RAM", "cycles/step"],
             [[r["feature"], fmt_int(r["flash"]) + (
                 " (over a Nano's 30,720)" if (num(r["flash"]) or 0) > 30720 else ""),
-              fmt_int(r["flash_delta"], True),
-              fmt_int(r["ram"]), fmt_int(r["ram_delta"], True),
+              fmt_int(r["flash_delta"], True)] +
+             ([goal_cell(r["flash_delta"], r.get("flash_delta_goal"))]
+              if goals else []) +
+             [fmt_int(r["ram"]), fmt_int(r["ram_delta"], True),
               fmt_int(r["cycles_per_step"])] for r in sel])
+        lines.append("")
+    if others:
+        lines += [
+            "## Whole sketches: the lever scene and the examples", "",
+            "The lever scene alone (MemoryBenchmark/LeverScene.h, built with "
+            "SCENE=1): a `LeverWorld` in 2D, `buildLever()`, a step of 1/256 s "
+            "in `loop()` and the end's height written to a volatile, as a new "
+            "user would write it; cycles per step as for the rungs. The "
+            "examples are not rebuilt here: their figures are those of their "
+            "own Nano builds in extras/sizes/nano.csv (`make sizes`; see "
+            "nano.md for the builds that used the Servo stand-in). Flash and "
+            "RAM include the Arduino core.", ""]
+        lines += md_table(
+            ["sketch", "scalar", "flash", "goal", "RAM", "goal", "cycles/step"],
+            [[r["feature"] if r["kind"] == "scene" else
+              "examples/%s" % r["feature"],
+              r["scalar"] if r["scalar"] != "NA" else "",
+              fmt_int(r["flash"]), goal_cell(r["flash"], r.get("flash_goal")),
+              fmt_int(r["ram"]), goal_cell(r["ram"], r.get("ram_goal")),
+              fmt_int(r["cycles_per_step"]) if r["kind"] == "scene" else ""]
+             for r in others])
         lines.append("")
     return "\n".join(lines)
 
@@ -661,6 +741,7 @@ def readme_summary(out_dir, tools):
         lines += [l.replace("## ", "### ") for l in
                   links_markdown(scene_rows, "extras/benchmarks/")]
         lines.append("")
+    mem_rows = [r for r in mem_rows if r.get("kind", "rung") == "rung"]
     if mem_rows:
         combos = []
         for r in mem_rows:
