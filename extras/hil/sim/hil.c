@@ -51,6 +51,9 @@ typedef struct {
   const char* elf;
   double seconds, length;
   int servo_pin_port, servo_pin_bit;  // 'D', 7
+  double servo_phase_us;  // --servo-phase: the servo's frames this much later
+  double phase_left_us;  // of the shift, still to make
+  unsigned long long first_frame;  // cycle of the first accepted pulse's rise
   int profile_port, profile_bit;      // 'B', 0 (Arduino pin 8)
   FILE* trace;
   int trace_every;  // model steps per trace line
@@ -132,14 +135,54 @@ static uint32_t timing_steps(void) {
 
 // ---- simavr hooks ----------------------------------------------------------
 
+// Timer1's counter, through simavr's own handlers of TCNT1 (which keep its
+// compare and overflow events in step with the count).
+#define TCNT1L_ADDR 0x84
+#define TCNT1H_ADDR 0x85
+
+static uint16_t timer1_read(void) {
+  avr_t* avr = sim.avr;
+  const int io = AVR_DATA_TO_IO(TCNT1L_ADDR);
+  uint8_t lo = avr->io[io].r.c ? avr->io[io].r.c(avr, TCNT1L_ADDR, avr->io[io].r.param)
+                               : avr->data[TCNT1L_ADDR];
+  return (uint16_t)(lo | (avr->data[TCNT1H_ADDR] << 8));
+}
+
+static void timer1_write(uint16_t count) {
+  avr_t* avr = sim.avr;
+  const int io = AVR_DATA_TO_IO(TCNT1L_ADDR);
+  avr->data[TCNT1H_ADDR] = (uint8_t)(count >> 8);
+  if (avr->io[io].w.c)
+    avr->io[io].w.c(avr, TCNT1L_ADDR, (uint8_t)(count & 0xff), avr->io[io].w.param);
+  else
+    avr->data[TCNT1L_ADDR] = (uint8_t)(count & 0xff);
+}
+
+// The phase of the servo's 20 ms frames against the firmware's events is
+// set by how long setup() and loop() happen to take, and the hand's events
+// come at any phase on a real device. --servo-phase shifts it: after the
+// first pulse ends, Timer1 (0.5 us a tick; the servo library's alone) is set
+// back by the phase, so every later frame starts that much later. At most
+// 10 ms at the end of a pulse (the next frame's compare is then at most
+// 30,000 ticks ahead, and the 16-bit counter must not wrap past it), the
+// rest at the end of the next.
+static void shift_servo_frames(void) {
+  const double us = sim.phase_left_us > 10000 ? 10000 : sim.phase_left_us;
+  sim.phase_left_us -= us;
+  const uint16_t ticks = (uint16_t)(us * 2 + 0.5);
+  timer1_write((uint16_t)(timer1_read() - ticks));
+}
+
 static void on_servo_pin(avr_irq_t* irq, uint32_t value, void* param) {
   (void)irq;
   (void)param;
+  if (!value && sim.pulses.high && sim.phase_left_us > 0) shift_servo_frames();
   if (hil_pulse_edge(&sim.pulses, sim.avr->cycle, value != 0, CYCLES_PER_US,
                      IGNORE_PULSES_CYCLES)) {
     const double servo = hil_pulse_to_servo_deg(&sim.dev.p, sim.pulses.last_us);
     sim.dev.target_deg = hil_servo_to_lever_deg(&sim.dev.p, servo);
     sim.dev.have_target = 1;
+    if (sim.pulses.accepted == 1) sim.first_frame = sim.pulses.rise;
   }
 }
 
@@ -269,6 +312,7 @@ static void usage(void) {
           "usage:\n"
           "  hil run --elf E --seconds T [--length M] [--hand none|force|rigid|spring]\n"
           "          [--force t0:F0,t1:F1,...] [--hold DEG] [--set NAME=VALUE]...\n"
+          "          [--servo-phase MS]  (the servo's frames MS later, 0..20)\n"
           "          [--trace CSV] [--trace-every STEPS] [--passes CSV] [--uart FILE]\n"
           "  hil reference --length M --seconds T [--force P] [--theta0 DEG]\n"
           "          [--trace CSV] [--h S]\n"
@@ -319,6 +363,7 @@ static int cmd_run(int argc, char** argv) {
     if (!strcmp(a, "--elf")) sim.elf = v;
     else if (!strcmp(a, "--seconds")) sim.seconds = atof(v);
     else if (!strcmp(a, "--length")) sim.length = atof(v);
+    else if (!strcmp(a, "--servo-phase")) sim.servo_phase_us = atof(v) * 1000;
     else if (!strcmp(a, "--hold")) hold = atof(v);
     else if (!strcmp(a, "--force")) force = v;
     else if (!strcmp(a, "--trace")) sim.trace = open_out(v);
@@ -340,7 +385,10 @@ static int cmd_run(int argc, char** argv) {
       usage();
     }
   }
-  if (!sim.elf || sim.seconds <= 0 || sim.trace_every < 1) usage();
+  if (!sim.elf || sim.seconds <= 0 || sim.trace_every < 1 ||
+      sim.servo_phase_us < 0 || sim.servo_phase_us >= 20000)
+    usage();
+  sim.phase_left_us = sim.servo_phase_us;
 
   hil_device_init(&sim.dev, &params);
   sim.dev.hand = hand;
@@ -465,6 +513,10 @@ static int cmd_run(int argc, char** argv) {
   const uint32_t steps = timing_steps();
   printf("result seconds=%.4f\n", t_end);
   printf("result first_loop_s=%.6f\n", sim.first_edge / F_CPU_HZ);
+  printf("result first_frame_s=%.6f\n", sim.first_frame / F_CPU_HZ);
+  // Where the frames start within 20 ms of the chip's time (the last one).
+  printf("result frame_phase_ms=%.3f\n",
+         fmod(sim.pulses.rise / F_CPU_HZ * 1000, 20.0));
   printf("result end_index=%d\n", sim.end_index);
   printf("result virtual_radius_m=%.5f\n", sqrt(v.x * v.x + v.y * v.y));
   printf("result virtual_deg=%.4f\n", v.deg);
