@@ -108,6 +108,32 @@ struct Resolver {
     return resolve(world, Scaler<S>(dt), cap);
   }
 
+  // The contact pool's policy, for a contact a generator records: the next
+  // free slot; when the pool is full, the least severe contact (the largest
+  // separating velocity) gives way to a more severe one, and either way one
+  // contact is dropped (World counts it and raises kContactsDropped).
+  // Returns the slot, or kNoIndex when the new contact is the one dropped.
+  static uint8_t slotFor(W& world, S separating) {
+    const uint8_t count = world.contactCount();
+    if (count < W::kContactCapacity) {
+      WorldAccess::takeContactSlot(world);
+      return count;
+    }
+    WorldAccess::dropContact(world);
+    if (W::kContactCapacity == 0) return kNoIndex;
+    uint8_t slot = 0;
+    for (uint8_t i = 1; i < W::kContactCapacity; ++i) {
+      if (WorldAccess::contact(world, i).separatingVelocity >
+          WorldAccess::contact(world, slot).separatingVelocity) {
+        slot = i;
+      }
+    }
+    if (!(separating < WorldAccess::contact(world, slot).separatingVelocity)) {
+      return kNoIndex;
+    }
+    return slot;
+  }
+
   static S separatingVelocity(W& world, const C& c) {
     return separatingVelocity(world, c.a, c.b, c.normal);
   }

@@ -140,6 +140,15 @@ class WorldAccess {
                             typename W::Scalar separating, uint8_t source) {
     world.recordContact(a, b, normal, penetration, separating, source);
   }
+  // For the resolver's pool policy (Resolver::slotFor()).
+  template <class W>
+  static void takeContactSlot(W& world) {
+    world.takeContactSlot();
+  }
+  template <class W>
+  static void dropContact(W& world) {
+    world.dropContact();
+  }
   template <class W>
   static bool isIdle(typename W::Scalar penetration,
                      typename W::Scalar separating, typename W::Scalar alongA,

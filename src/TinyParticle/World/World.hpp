@@ -829,23 +829,9 @@ class World
     if (SleepStore::settler() != nullptr) {
       wakeFor(a, b, penetration, separating);
     }
-    uint8_t slot = mContactCount;
-    if (slot >= kContacts) {
-      mError |= WorldError::kContactsDropped;
-      if (mStats.dropped == 0) TINYPARTICLE_DEBUG_PRINT("contact pool full");
-      if (mStats.dropped != 255) ++mStats.dropped;
-      if (kContacts == 0) return;
-      slot = 0;
-      for (uint8_t i = 1; i < kContacts; ++i) {
-        if (contactAt(i).separatingVelocity >
-            contactAt(slot).separatingVelocity) {
-          slot = i;
-        }
-      }
-      if (!(separating < contactAt(slot).separatingVelocity)) return;
-    } else {
-      ++mContactCount;
-    }
+    // Which slot it takes is the resolver's policy (Resolver::slotFor()).
+    const uint8_t slot = Resolver<World>::slotFor(*this, separating);
+    if (slot == kNoIndex) return;
     ContactType& c = contactAt(slot);
     c.normal = normal;
     c.penetration = penetration;
@@ -853,6 +839,14 @@ class World
     c.a = a;
     c.b = b;
     c.source = source;
+  }
+  // For Resolver::slotFor(): a contact takes the next free slot, or one
+  // is dropped (counted in stats().dropped, kContactsDropped raised).
+  void takeContactSlot() { ++mContactCount; }
+  void dropContact() {
+    mError |= WorldError::kContactsDropped;
+    if (mStats.dropped == 0) TINYPARTICLE_DEBUG_PRINT("contact pool full");
+    if (mStats.dropped != 255) ++mStats.dropped;
   }
 
  private:
