@@ -72,12 +72,7 @@ struct LoneRods {
   // on no other rod.
   static bool isAlone(W& world, uint8_t rod) {
     const uint8_t p = WorldAccess::constraint(world, rod).a;
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (i == rod || !isRodAt(world, i)) continue;
-      const Slot& s = WorldAccess::constraint(world, i);
-      if (s.a == p || s.b == p) return false;
-    }
-    return true;
+    return Rods::otherRod(world, rod, p) == kNoIndex;
   }
 
   // Every rod alone, with exactly one immovable end (an anchor, or a
@@ -85,7 +80,7 @@ struct LoneRods {
   // chains' solve hands to solveAll().
   static bool allLone(W& world) {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (!isRodAt(world, i)) continue;
+      if (!Rods::isRodAt(world, i)) continue;
       const Slot& s = WorldAccess::constraint(world, i);
       if (isImmovable(world, s.a) == isImmovable(world, s.b)) return false;
     }
@@ -99,7 +94,7 @@ struct LoneRods {
     Pass pass(byDt, invDt);
     pass.unit = false;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (isRodAt(world, i)) {
+      if (Rods::isRodAt(world, i)) {
         shake<kTwoMovable>(world, WorldAccess::constraint(world, i), pass);
       }
     }
@@ -107,16 +102,13 @@ struct LoneRods {
     const bool unit = pass.turned;
     WorldAccess::movePositions(world, byDt);
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (isRodAt(world, i)) {
+      if (Rods::isRodAt(world, i)) {
         rattle<kTwoMovable>(world, WorldAccess::constraint(world, i), unit);
       }
     }
   }
 
  private:
-  static bool isRodAt(W& world, uint8_t i) {
-    return WorldAccess::isRod(world, WorldAccess::constraint(world, i));
-  }
   static bool isImmovable(W& world, uint8_t p) {
     return p >= W::kParticleCapacity || world.particleAt(p).isStatic();
   }

@@ -124,12 +124,7 @@ struct PlaneConstraint {
       }
     }
     for (uint8_t k = 0; k < count; ++k) {
-      const uint8_t i = near[k];
-      const P& q = WorldAccess::particle(world, i);
-      const S side = positive ? q.position.*along - q.radius
-                              : q.position.*along + q.radius;
-      touch(world, normal, along, positive, i,
-            positive ? offset - side : offset + side, source);
+      touch(world, normal, along, positive, offset, near[k], source);
     }
   }
 
@@ -187,11 +182,7 @@ struct PlaneConstraint {
       const S offset = positive ? box.low.*along : -(box.high.*along);
       for (uint8_t k = 0; k < count; ++k) {
         if ((walls[k] & bit) == 0) continue;
-        const P& q = WorldAccess::particle(world, near[k]);
-        const S side = positive ? q.position.*along - q.radius
-                                : q.position.*along + q.radius;
-        touch(world, normal, along, positive, near[k],
-              positive ? offset - side : offset + side, source);
+        touch(world, normal, along, positive, offset, near[k], source);
       }
     }
   }
@@ -205,17 +196,22 @@ struct PlaneConstraint {
         W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
   };
 
-  // A particle within the margin of an axis plane: the separating velocity
-  // and the acceleration along the normal are that coordinate of the
-  // velocity and of the acceleration, with the normal's sign (exactly what
-  // the dot products give); the sign does not matter for the acceleration,
-  // only whether it is zero (WorldAccess::isIdle<W>()).
+  // Particle i within the margin of the axis plane of `offset` (see
+  // generateAxis(): the bound, or minus it for a negative normal). Its
+  // penetration, separating velocity and acceleration along the normal are
+  // that coordinate of its position (less or plus its radius), velocity and
+  // acceleration, with the normal's sign (exactly what the dot products
+  // give); the sign does not matter for the acceleration, only whether it
+  // is zero (WorldAccess::isIdle<W>()).
   template <class W>
   TINYPARTICLE_NOINLINE static void touch(W& world, const Vec<S, Dim>& normal,
                                           S Vec<S, Dim>::*along,
-                                          bool positive, uint8_t i,
-                                          S penetration, uint8_t source) {
+                                          bool positive, S offset, uint8_t i,
+                                          uint8_t source) {
     const Particle<S, Dim>& p = WorldAccess::particle(world, i);
+    const S side = positive ? p.position.*along - p.radius
+                            : p.position.*along + p.radius;
+    const S penetration = positive ? offset - side : offset + side;
     const S velocity = p.velocity.*along;
     const S separating = positive ? velocity : -velocity;
     const S acceleration =

@@ -261,7 +261,8 @@ struct RodSolver {
     return n;
   }
 
-  // The other rod at particle p (of degree 2), or kNoIndex.
+  // The other rod at particle p (of degree 2), or kNoIndex; also what
+  // LoneRods asks when a rod is added (none: it is alone).
   static uint8_t otherRod(W& world, uint8_t rod, uint8_t p) {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (i == rod || !isRodAt(world, i)) continue;

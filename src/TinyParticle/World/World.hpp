@@ -366,10 +366,7 @@ class World
   // handle is stale or the slot holds another class.
   template <class C>
   C* forceParams(ForceId id) {
-    ForceSlot* f = force(id);
-    return f != nullptr && f->template holds<C>()
-               ? &f->params.template as<C>()
-               : nullptr;
+    return paramsIn<C>(force(id));
   }
 
   bool removeForce(ForceId id) { return removeSlot(force(id)); }
@@ -513,10 +510,7 @@ class World
   // another class.
   template <class C>
   C* constraintParams(ConstraintId id) {
-    ConstraintSlot* c = constraint(id);
-    return c != nullptr && c->template holds<C>()
-               ? &c->params.template as<C>()
-               : nullptr;
+    return paramsIn<C>(constraint(id));
   }
 
   bool removeConstraint(ConstraintId id) {
@@ -1135,6 +1129,14 @@ class World
     SketchGenerator sketch;
     sketch.object = generator;
     return placeConstraint(a, b, restitution, sketch, &Runner::generate);
+  }
+
+  // A slot's parameters of class C; null for no slot or another class.
+  template <class C, class Slot>
+  static C* paramsIn(Slot* slot) {
+    return slot != nullptr && slot->template holds<C>()
+               ? &slot->params.template as<C>()
+               : nullptr;
   }
 
   // Both live, and two different particles.
