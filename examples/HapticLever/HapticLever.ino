@@ -350,6 +350,46 @@ void commandServo() {
 // when the transmit buffer has room for the whole line.
 const uint8_t kLineMax = 52;
 
+// ...and only between the servo's pulses. The Servo library starts and ends
+// each pulse in a Timer1 interrupt; when Serial's transmit interrupt (one
+// per byte sent) is running at that moment, the edge comes several
+// microseconds late, and the servo turns by half a degree for that frame:
+// a lever at rest twitches. So a line is queued only after a pulse has
+// ended (the pin is watched at every pass of loop()) and only if it and the
+// bytes already queued leave the UART before the next pulse can begin.
+#ifdef SERIAL_TX_BUFFER_SIZE
+const int kTxQueueMax = SERIAL_TX_BUFFER_SIZE - 1;
+#else
+const int kTxQueueMax = 63;
+#endif
+const uint16_t kByteUs = 87;          // 10 bits at 115200 baud
+const uint16_t kServoFrameUs = 20000; // from one pulse's start to the next
+// The quiet time after a pulse's end: the frame less the longest pulse we
+// command and a margin for seeing the end up to a pass of loop() late.
+const uint16_t kQuietUs =
+    kServoFrameUs - (kServoLevelUs + kServoRangeUs) - 1000;
+uint16_t pulseEndMicros;   // micros() when the last pulse was seen ending
+uint8_t servoPinState = 0; // bit 0: the pin was high; bit 1: an end was seen
+
+void watchServoPulse() {
+  const bool high = digitalRead(kServoPin) == HIGH;
+  if (!high && (servoPinState & 1)) {
+    pulseEndMicros = uint16_t(micros());
+    servoPinState = 2;
+  } else if (high) {
+    servoPinState |= 1;
+  }
+}
+
+// True when a line of n bytes may be queued now (see above).
+bool serialQuiet(uint8_t n) {
+  if (servoPinState != 2) return false;  // a pulse is on, or none seen yet
+  int bytes = kTxQueueMax - Serial.availableForWrite() + n + 1;
+  if (bytes < 0) bytes = 0;
+  const uint16_t since = uint16_t(micros()) - pulseEndMicros;
+  return since <= kQuietUs && uint16_t(bytes) * kByteUs <= kQuietUs - since;
+}
+
 uint8_t appendText(char* line, uint8_t n, const __FlashStringHelper* text) {
   const char* p = reinterpret_cast<const char*>(text);
   for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
@@ -404,7 +444,7 @@ bool writeStatus() {
   }
   line[n++] = '\r';
   line[n++] = '\n';
-  if (Serial.availableForWrite() < n) return false;
+  if (Serial.availableForWrite() < n || !serialQuiet(n)) return false;
   Serial.write(reinterpret_cast<const uint8_t*>(line), n);
   return true;
 }
@@ -439,6 +479,7 @@ void loop() {
   *portOutputRegister(digitalPinToPort(HAPTIC_PROFILE_PIN)) ^=
       digitalPinToBitMask(HAPTIC_PROFILE_PIN);
 #endif
+  watchServoPulse();
   // A pass either steps the physics or does one piece of the other work,
   // so that no pass is long and every step comes on time.
   if (stepped) {
@@ -456,6 +497,7 @@ void loop() {
   if (output == kIdle || timing.microsToNextStep() < 100) return;
   if (output == kFrame) {
     if (Serial.availableForWrite() >= renderer.lineLength() &&
+        serialQuiet(renderer.lineLength()) &&
         renderer.drawLine(world, Serial)) {
       output = kStatus;
     }
