@@ -36,7 +36,7 @@
 // release, a rigid or springy grip at level):
 //  - The servo is sent the angle the lever will have about 25 ms from now,
 //    from its angular velocity and acceleration (a second-order prediction,
-//    the push's share of it looking a little less far ahead). This
+//    the acceleration's share of it looking a little less far ahead). This
 //    cancels most of the servo's delay, which is what makes the loop
 //    unstable; with a first-order prediction (velocity only) the held short
 //    lever still oscillated, because the lead it gives comes with too much
@@ -156,9 +156,13 @@ const int kServoDirection = 1;      // -1 if the servo is mounted the other way
 const S kForceLead(0.0125);   // s
 const S kPushLimit(40);       // N: the most the damper may make of a push
 // How far ahead the servo is sent: about its frame and lag for the lever's
-// own motion (velocity and gravity), less for the part that the user's push
-// adds, since that part closes the loop through the foam and a longer
-// horizon adds gain at the loop's frequency. The three times were tuned in
+// velocity, less for its acceleration, since the user's push in it closes
+// the loop through the foam and a longer horizon adds gain at the loop's
+// frequency. Gravity's share looks exactly as far ahead as the push's: with
+// a longer horizon of its own, a push that balances the weight (no
+// acceleration) sent the servo half a degree below the lever it holds still,
+// and the foam kicked the lever when the servo first went there. The times
+// were tuned in
 // the device simulator, including its runs with other foam damping, preload
 // and lever inertia; much shorter or longer ones let the held short lever
 // oscillate again.
@@ -328,11 +332,11 @@ void commandServo() {
   const S turnRate =
       (x.x * end->velocity.y - x.y * end->velocity.x) * inverseLengthSquared;
   // Gravity's angular acceleration is -g x / L^2, the user's forceScale /
-  // mass (the end's 0.1 kg, from buildLever()).
+  // mass (the end's 0.1 kg, from buildLever()); their sum, the lever's,
+  // looks kPushLead ahead (see there).
   const S gravity = -(S(9.81) * x.x * inverseLengthSquared);
   S angle = leverRadians() + turnRate * kServoLead +
-            gravity * (kServoLead * kServoLead * S(0.5)) +
-            forceScale * (S(10) * kPushLead * kPushLead * S(0.5));
+            (gravity + forceScale * S(10)) * (kPushLead * kPushLead * S(0.5));
   if (stopHold != 0) {
     angle = stopHold < 0 ? -kRangeRadians : kRangeRadians;
     stopHold += stopHold < 0 ? 1 : -1;
