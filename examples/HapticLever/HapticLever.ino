@@ -153,7 +153,11 @@ const int kServoDirection = 1;      // -1 if the servo is mounted the other way
 // ---- Stabilisation (see the opening comment) -----------------------------
 // The damper across the foam, as a time: damping / foam stiffness. The push
 // is averaged over about 4 ms and its rate over about 8 ms (prepareStep()).
-const S kForceLead(0.0125);   // s
+// A push that steps from nothing to F gives the weight kForceLead * F more
+// momentum than F alone would, until the push ends and takes it back: a
+// pushed lever climbs faster and higher than physics says. So the time is
+// about the shortest that still settles every grip of the simulator.
+const S kForceLead(0.010);   // s
 const S kPushLimit(40);       // N: the most the damper may make of a push
 // How far ahead the servo is sent: about its frame and lag for the lever's
 // velocity, less for its acceleration, since the user's push in it closes
