@@ -16,11 +16,11 @@ namespace {
 const uint16_t kTicksPerUs = 2;  // F_CPU / 8 / 1 MHz at 16 MHz
 const uint16_t kFrameTicks = REFRESH_INTERVAL * kTicksPerUs;
 
+// What the interrupt needs of each channel; the attach() range lives in the
+// Servo object, so that the table costs about what the library's does.
 struct Channel {
   volatile uint8_t* port;  // PORTx of the pin, null when detached
   uint8_t mask;
-  int16_t minUs;
-  int16_t maxUs;
   volatile uint16_t ticks;  // the pulse width, read by the interrupt
 };
 
@@ -44,9 +44,6 @@ void startTimer() {
   SREG = sreg;
 }
 
-int16_t clampUs(const Channel& c, int us) {
-  return us < c.minUs ? c.minUs : (us > c.maxUs ? c.maxUs : int16_t(us));
-}
 
 }  // namespace
 
@@ -72,13 +69,12 @@ ISR(TIMER1_COMPA_vect) {
   current = -1;
 }
 
-Servo::Servo() : mChannel(INVALID_SERVO) {
+Servo::Servo()
+    : mChannel(INVALID_SERVO), mMinUs(MIN_PULSE_WIDTH), mMaxUs(MAX_PULSE_WIDTH) {
   if (channelCount < MAX_SERVOS) {
     mChannel = channelCount++;
     Channel& c = channels[mChannel];
     c.port = nullptr;
-    c.minUs = MIN_PULSE_WIDTH;
-    c.maxUs = MAX_PULSE_WIDTH;
     c.ticks = DEFAULT_PULSE_WIDTH * kTicksPerUs;
   }
 }
@@ -95,8 +91,8 @@ uint8_t Servo::attach(int pin, int minUs, int maxUs) {
   Channel& c = channels[mChannel];
   uint8_t sreg = SREG;
   cli();
-  c.minUs = int16_t(minUs);
-  c.maxUs = int16_t(maxUs);
+  mMinUs = int16_t(minUs);
+  mMaxUs = int16_t(maxUs);
   c.mask = digitalPinToBitMask(pin);
   c.port = portOutputRegister(digitalPinToPort(pin));
   SREG = sreg;
@@ -121,9 +117,8 @@ bool Servo::attached() {
 void Servo::write(int value) {
   if (mChannel == INVALID_SERVO) return;
   if (value < MIN_PULSE_WIDTH) {
-    const Channel& c = channels[mChannel];
     const long angle = value < 0 ? 0 : (value > 180 ? 180 : value);
-    value = int(c.minUs + angle * (c.maxUs - c.minUs) / 180);
+    value = int(mMinUs + angle * (mMaxUs - mMinUs) / 180);
   }
   writeMicroseconds(value);
 }
@@ -131,7 +126,9 @@ void Servo::write(int value) {
 void Servo::writeMicroseconds(int us) {
   if (mChannel == INVALID_SERVO) return;
   Channel& c = channels[mChannel];
-  const uint16_t ticks = uint16_t(clampUs(c, us)) * kTicksPerUs;
+  if (us < mMinUs) us = mMinUs;
+  if (us > mMaxUs) us = mMaxUs;
+  const uint16_t ticks = uint16_t(us) * kTicksPerUs;
   uint8_t sreg = SREG;
   cli();
   c.ticks = ticks;
@@ -140,9 +137,8 @@ void Servo::writeMicroseconds(int us) {
 
 int Servo::read() {
   if (mChannel == INVALID_SERVO) return 0;
-  const Channel& c = channels[mChannel];
-  const long span = c.maxUs - c.minUs;
-  return int(((readMicroseconds() - c.minUs) * 180L + span / 2) / span);
+  const long span = mMaxUs - mMinUs;
+  return int(((readMicroseconds() - mMinUs) * 180L + span / 2) / span);
 }
 
 int Servo::readMicroseconds() {

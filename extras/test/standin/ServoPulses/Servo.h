@@ -39,6 +39,8 @@ class Servo {
 
  private:
   uint8_t mChannel;
+  int16_t mMinUs;  // the attach() range
+  int16_t mMaxUs;
 };
 
 #endif
