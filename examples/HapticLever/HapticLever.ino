@@ -59,7 +59,8 @@
 // The sketch never waits: the physics step runs alone in its pass of
 // loop(); the analog inputs are converted one at a time while the loop does
 // other work; serial output is written only when the transmit buffer has
-// room for the whole line; the servo is commanded in microseconds (about
+// room for the whole line, and only between the servo's pulses (whose edges
+// it would otherwise delay); the servo is commanded in microseconds (about
 // 0.1 degree each).
 #include <Servo.h>
 #include <TinyParticle.h>
