@@ -472,6 +472,9 @@ void setup() {
 #endif
   lever = buildLever(world, &userForce, kShortest);
   setLeverLength(analogRead(kLengthDialPin));
+  // The first step needs the push as a force too (later steps get it from
+  // the pass before them), or gravity alone acts for that step.
+  prepareStep();
   AnalogInput::begin();
   AnalogInput::start(inputPin());
   if (!kPlotter) {
