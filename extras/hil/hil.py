@@ -540,6 +540,7 @@ def push_release(sim, elf, jobs):
                            [x[1] for x in felt], [x[1] for x in virt]))
         dr, df = over_phases([x[0] for x in felt])[0], over_phases([x[1] for x in felt])[0]
         er, ef = rel(dr, rr), rel(df, rf)
+        rr_hand = rr
         row("3 push and release: rise time", case,
             "%s felt; physics %s: %s (to %.1f deg)" % (
                 fmt_phases([x[0] for x in felt]), fmt_s(rr), fmt_pct(er), lvl),
@@ -554,10 +555,13 @@ def push_release(sim, elf, jobs):
         rr = run_reference(sim, name + "_read", L, 3.0,
                            "0:0,%.3f:%.5f,%.3f:0" % (t_push, read_f, t_push + dur), theta0=-RANGE)
         rpeak = max(window(rr["t"], rr["theta_deg"], t_push, rr["t"][-1]))
+        rrise, rfall = times(rr["t"], rr["theta_deg"])
         row("3 push and release: the push as read", case,
             "the sketch read the push as %.3f N at the hand (%s); with that push physics rises to %.1f deg "
-            "(%.1f deg with the hand's), felt %.1f deg" % (
-                read_f, fmt_pct(rel(read_f, f)), rpeak, peak, max(window(t, y, t_push, t[-1]))),
+            "(%.1f deg with the hand's), felt %.1f deg; its rise and fall times (to %.1f deg) %s and %s "
+            "(%s and %s against the hand's)" % (
+                read_f, fmt_pct(rel(read_f, f)), rpeak, peak, max(window(t, y, t_push, t[-1])), lvl,
+                fmt_s(rrise), fmt_s(rfall), fmt_pct(rel(rrise, rr_hand)), fmt_pct(rel(rfall, rf))),
             "reported", None)
         # A runaway at any phase is one: the worst of them.
         high = max(max(window(d["trace"]["t"], d["trace"]["servo_deg"], t_push, t[-1])) for d in devs)

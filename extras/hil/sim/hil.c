@@ -46,6 +46,11 @@
 #define SERIAL_UDR_PTR 22
 #define SERIAL_TX_HEAD 27
 
+// The virtual lever and the push as the firmware holds them.
+typedef struct {
+  double x, y, vx, vy, deg, rate_deg_s, push_N;
+} Virtual;
+
 typedef struct {
   // Options.
   const char* elf;
@@ -85,6 +90,7 @@ typedef struct {
   long worst_pass_steps;
   long max_steps_per_pass, passes_no_step;
   uint64_t first_edge;
+  Virtual pass_virtual;  // read at the top of the last pass of loop()
   long adc_conversions;
   long uart_bytes;
   long stalled_steps, model_steps;
@@ -102,10 +108,6 @@ static uint32_t rd32(uint32_t addr) {
 }
 
 static double q16(uint32_t addr) { return (int32_t)rd32(addr) / 65536.0; }
-
-typedef struct {
-  double x, y, vx, vy, deg, rate_deg_s, push_N;
-} Virtual;
 
 static int read_virtual(Virtual* v) {
   if (!sim.a_world || !sim.a_user_force) return 0;
@@ -231,6 +233,11 @@ static void on_profile_pin(avr_irq_t* irq, uint32_t value, void* param) {
       sim.last_tx_head = d[SERIAL_TX_HEAD];
     }
   }
+  // No store of the firmware is under way at the top of loop() (no
+  // interrupt handler writes the lever or userForce): a consistent copy.
+  Virtual v;
+  memset(&v, 0, sizeof v);
+  if (read_virtual(&v)) sim.pass_virtual = v;
   sim.pass_edges++;
   sim.last_edge = now;
   sim.last_steps = steps;
@@ -252,9 +259,10 @@ static void on_uart(avr_irq_t* irq, uint32_t value, void* param) {
 }
 
 static void write_trace_line(double t) {
-  Virtual v;
-  memset(&v, 0, sizeof v);
-  read_virtual(&v);
+  // The firmware's state as it was at the top of the last pass of loop():
+  // a live read may fall between the byte stores of a value (the AVR
+  // writes a 32-bit number one byte at a time) and see half of each.
+  const Virtual v = sim.pass_virtual;
   const Device* d = &sim.dev;
   fprintf(sim.trace,
           "%.5f,%.4f,%.4f,%.4f,%.1f,%.4f,%.2f,%.4f,%.4f,%.4f,%d,%d,%.4f,%d\n",
