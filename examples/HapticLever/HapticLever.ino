@@ -378,24 +378,30 @@ const uint16_t kServoFrameUs = 20000; // from one pulse's start to the next
 const uint16_t kQuietUs =
     kServoFrameUs - (kServoLevelUs + kServoRangeUs) - 1000;
 uint16_t pulseEndMicros;   // micros() when the last pulse was seen ending
-uint8_t servoPinState = 0; // bit 0: the pin was high; bit 1: an end was seen
+uint8_t servoPinState = 0; // bit 0: a pulse is on; bit 1: one has ended
 
 void watchServoPulse() {
   const bool high = digitalRead(kServoPin) == HIGH;
-  if (!high && (servoPinState & 1)) {
+  if (high) {
+    servoPinState |= 1;
+  } else if (servoPinState & 1) {
     pulseEndMicros = uint16_t(micros());
     servoPinState = 2;
-  } else if (high) {
-    servoPinState |= 1;
   }
 }
 
-// True when a line of n bytes may be queued now (see above).
+// True when a line of n bytes may be queued now (see above). Without pulses
+// (none yet, or no servo attached) there is nothing to keep clear.
 bool serialQuiet(uint8_t n) {
-  if (servoPinState != 2) return false;  // a pulse is on, or none seen yet
+  if (servoPinState & 1) return false;  // a pulse is on
+  if (servoPinState == 0) return true;
   int bytes = kTxQueueMax - Serial.availableForWrite() + n + 1;
   if (bytes < 0) bytes = 0;
   const uint16_t since = uint16_t(micros()) - pulseEndMicros;
+  if (since > 2 * kServoFrameUs) {  // the pulses have stopped
+    servoPinState = 0;
+    return true;
+  }
   return since <= kQuietUs && uint16_t(bytes) * kByteUs <= kQuietUs - since;
 }
 
