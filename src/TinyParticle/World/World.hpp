@@ -234,14 +234,14 @@ class World
   ForceId addGravity() { return addGravity(standardGravity()); }
   ForceId addGravity(const Vec& acceleration) {
     return placeForce(kAllIndex, kNoIndex, GravityType::make(acceleration),
-                      &GravityType::template run<World>);
+                      &GravityType::template runUniform<World>);
   }
   // Gravity for one particle, standard gravity times `multiplier`.
   ForceId addGravity(ParticleId target, S multiplier = S(1)) {
     if (!check(target)) return ForceId();
     return placeForce(target.index, kNoIndex,
                       GravityType::make(standardGravity() * multiplier),
-                      &GravityType::template run<World>);
+                      &GravityType::template runOn<World>);
   }
 
   // Drag k1 |v| + k2 |v|^2 against the velocity, on every particle or one.
