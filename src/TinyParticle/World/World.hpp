@@ -915,17 +915,15 @@ class World
       if (Dim == 3) {
         accelerate(p.velocity[2], p.acceleration[2], uniformStep[2], byDt);
       }
-      if (p.damping != 0) {
+      // (Linked only by a sketch that damps: Core/Particle.hpp.)
+      const typename detail::Damping<S, Dim>::Apply damp =
+          detail::Damping<S, Dim>::sApply;
+      if (p.damping != 0 && damp != nullptr) {
         if (!haveDampingUnit) {
           dampingUnit = byDt.factor() * S(1.0 / 256);
           haveDampingUnit = true;
         }
-        S loss = S(long(p.damping)) * dampingUnit;
-        if (loss >= S(1)) {
-          p.velocity = Vec();
-        } else {
-          p.velocity.addScaled(p.velocity, -loss);
-        }
+        damp(p, dampingUnit);
       }
       // A float state that left the finite numbers (a diverging scene) is
       // flagged, and the particle stops (see nonFinite()): two bit tests
