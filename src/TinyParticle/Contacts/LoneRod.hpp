@@ -221,14 +221,17 @@ struct LoneRods {
       b.position.addScaled(u, -(error - error * share));
     }
   }
+  // RATTLE for two moving ends: their relative speed along u, r, is taken
+  // out as a change -r shared as above (shareBoth(): a gets (-r) w, which
+  // is -(r w) to the bit, as a product rounds ties away from zero; b gets
+  // -((-r) - (-r) w) = r - r w; in fixed point all but r = S::lowest(),
+  // which -r saturates: a relative speed no step reaches).
   TINYPARTICLE_NOINLINE static void rattleBoth(W& world, const Slot& s) {
-    P& a = world.particleAt(s.a);
-    P& b = world.particleAt(s.b);
     const V& u = Rods::linkOf(s).direction;
-    const S radial = dot(a.velocity - b.velocity, u);
-    const S share = shareOfA(a, b);
-    a.velocity.addScaled(u, -(radial * share));
-    b.velocity.addScaled(u, radial - radial * share);
+    const S radial = dot(world.particleAt(s.a).velocity -
+                             world.particleAt(s.b).velocity,
+                         u);
+    shareBoth(world, s, -radial, S());
   }
 };
 
