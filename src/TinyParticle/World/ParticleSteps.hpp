@@ -31,7 +31,11 @@ struct ParticleSteps {
   // v += a dt + uniformStep (the uniform acceleration's share, computed
   // once by the world), damping, then x += v dt when `andMove` (not with
   // rods: their solver moves the particles, movePositions()). Error bits go
-  // to `error` (the world's).
+  // to `error` (the world's). kMoveHere: the move written out here, for a
+  // world without constraints (there integrate() is the only place that
+  // moves, and a call per particle cost a spring in Float 1 %); else the
+  // out-of-line move() that movePositions() shares.
+  template <bool kMoveHere>
   static void integrate(P* particles, uint8_t count,
                                               const V& uniformStep,
                                               const Scaler<S>& byDt,
@@ -65,7 +69,12 @@ struct ParticleSteps {
         nonFinite(p, error);
         continue;
       }
-      if (andMove) move(p, byDt, error);
+      if (!andMove) continue;
+      if (kMoveHere) {
+        moveWrittenOut(p, byDt, error);
+      } else {
+        move(p, byDt, error);
+      }
     }
   }
 
@@ -92,6 +101,11 @@ struct ParticleSteps {
   // movePositions()), and the sleepers' catch-up in a third.
   TINYPARTICLE_NOINLINE static bool move(P& p, const Scaler<S>& byDt,
                                          uint16_t& error) {
+    return moveWrittenOut(p, byDt, error);
+  }
+  TINYPARTICLE_ALWAYS_INLINE static bool moveWrittenOut(P& p,
+                                                        const Scaler<S>& byDt,
+                                                        uint16_t& error) {
     moveAxis(p.position.x, p.velocity.x, byDt);
     moveAxis(p.position.y, p.velocity.y, byDt);
     if (Dim == 3) moveAxis(p.position[2], p.velocity[2], byDt);

@@ -898,8 +898,8 @@ class World
         }
       }
     }
-    Steps::integrate(&particleAt(0), kParticles, uniformStep, byDt, andMove,
-                     mError);
+    Steps::template integrate<kConstraints == 0>(
+        &particleAt(0), kParticles, uniformStep, byDt, andMove, mError);
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
   }
 
