@@ -3,7 +3,8 @@
 // (Contacts/LoneRod.hpp). The lever (one constraint slot, no contact slot)
 // must link neither the chains' solve (RodSolver's sweep, factor,
 // findChains) nor the resolver, nor any float routine; Newton's cradle
-// (rods hung from anchors, collisions) must link no chains' solve. Inputs
+// (rods hung from anchors, collisions) must link no chains' solve. Neither
+// damps a particle, so neither links the damping (Core/Particle.hpp). Inputs
 // and outputs are registers, so nothing is folded or optimised away.
 #include <avr/io.h>
 

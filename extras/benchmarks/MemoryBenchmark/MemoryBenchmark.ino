@@ -3,7 +3,8 @@
 // rung with FEATURE = 0..12, SCALAR = 1 (Q16_16) or 2 (Float) and DIM = 2 or
 // 3; extras/benchmarks/tools/bench.py does that and reads the sizes. Beside
 // the ladder, SCENE = 1 builds a whole scene instead of a rung: the lever
-// alone (LeverScene.h; SCALAR as above, always 2D).
+// alone (LeverScene.h; SCALAR as above, always 2D); SCENE = 2 that lever and
+// a second one in a World of another type (TwoWorlds.h).
 //
 // As built for the sizes, a rung only builds its world and steps it forever.
 // With BENCH_CYCLES=1 it also reports the mean cycles of a step over 256 steps
@@ -26,8 +27,13 @@
 namespace measured = leverScene;
 #define MEASURED 1
 #define ROW_LABEL "S" MEMORY_LABEL(SCENE)
+#elif SCENE == 2
+#include "TwoWorlds.h"
+namespace measured = twoWorlds;
+#define MEASURED 1
+#define ROW_LABEL "S" MEMORY_LABEL(SCENE)
 #elif SCENE != 0
-#error "SCENE must be 0 (a rung of the ladder) or 1 (the lever scene)"
+#error "SCENE must be 0 (a rung of the ladder), 1 (the lever scene) or 2 (two World types)"
 #elif FEATURE > 0
 #include "Ladder.h"
 namespace measured = ladder;

@@ -578,15 +578,19 @@ def memory_markdown(rows, tools, quick):
             "The lever scene alone (MemoryBenchmark/LeverScene.h, built with "
             "SCENE=1): a `LeverWorld` in 2D, `buildLever()`, a step of 1/256 s "
             "in `loop()` and the end's height written to a volatile, as a new "
-            "user would write it; cycles per step as for the rungs. The "
+            "user would write it; cycles per step as for the rungs. Beside it "
+            "(SCENE=2, TwoWorlds.h) the same lever and a second one in a World "
+            "of other capacities, with what that second World type adds to the "
+            "lever alone: the code that two types cannot share. The "
             "examples are not rebuilt here: their figures are those of their "
             "own Nano builds in extras/sizes/nano.csv (`make sizes`; see "
             "nano.md for the builds that used the Servo stand-in). Flash and "
             "RAM include the Arduino core.", ""]
         lines += md_table(
             ["sketch", "scalar", "flash", "goal", "RAM", "goal", "cycles/step"],
-            [[r["feature"] if r["kind"] == "scene" else
-              "examples/%s" % r["feature"],
+            [[("%s (%s B over the lever)" % (r["feature"], fmt_int(r["flash_delta"], True))
+               if r["flash_delta"] not in ("NA", "") else r["feature"])
+              if r["kind"] == "scene" else "examples/%s" % r["feature"],
               r["scalar"] if r["scalar"] != "NA" else "",
               fmt_int(r["flash"]), goal_cell(r["flash"], r.get("flash_goal")),
               fmt_int(r["ram"]), goal_cell(r["ram"], r.get("ram_goal")),

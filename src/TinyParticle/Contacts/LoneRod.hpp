@@ -58,14 +58,17 @@ struct LoneRods {
 
   // The world's rod solve when its rods never share a particle (see the
   // top of this file). kTwoMovable: a rod may have two movable ends (a
-  // rod between particles); without, every rod hangs from an anchor, and
-  // the code for two movable ends is not linked.
+  // rod between particles); without, every rod hangs from an anchor
+  // (World::anchoredRodAdded() sets this solve only then), and neither the
+  // code for two movable ends nor that for a rod between particles is
+  // linked.
   template <bool kTwoMovable>
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (WorldAccess::rodState(world) & W::kRodsChanged) {
       WorldAccess::setRodState(world, W::kRodsLone);
     }
-    solveAll<kTwoMovable>(world, byDt, WorldAccess::inverseDt(world, dt));
+    solveAll<kTwoMovable, !kTwoMovable>(world, byDt,
+                                        WorldAccess::inverseDt(world, dt));
   }
 
   // Whether rod slot `rod` may join a world solved here: its particle a is
@@ -88,14 +91,16 @@ struct LoneRods {
   }
 
   // Both solves for rods that share no particle: positions (SHAKE), the
-  // move, directions and velocities (RATTLE).
-  template <bool kTwoMovable>
+  // move, directions and velocities (RATTLE). kAnchored: every rod hangs
+  // from an anchor (b), and a is its moving end unless it is immovable.
+  template <bool kTwoMovable, bool kAnchored = false>
   static void solveAll(W& world, const Scaler<S>& byDt, S invDt) {
     Pass pass(byDt, invDt);
     pass.unit = false;
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (Rods::isRodAt(world, i)) {
-        shake<kTwoMovable>(world, WorldAccess::constraint(world, i), pass);
+        shake<kTwoMovable, kAnchored>(world, WorldAccess::constraint(world, i),
+                                      pass);
       }
     }
     // After a fast turn, unit directions (see above).
@@ -103,7 +108,8 @@ struct LoneRods {
     WorldAccess::movePositions(world, byDt);
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (Rods::isRodAt(world, i)) {
-        rattle<kTwoMovable>(world, WorldAccess::constraint(world, i), unit);
+        rattle<kTwoMovable, kAnchored>(world, WorldAccess::constraint(world, i),
+                                       unit);
       }
     }
   }
@@ -114,10 +120,12 @@ struct LoneRods {
   }
 
   // The moving end of a rod with one immovable end; fromB when that is b
-  // (the rod's direction then points away from it).
+  // (the rod's direction then points away from it). A rod on an anchor
+  // moves at a.
+  template <bool kAnchored>
   static P& movingEnd(W& world, const Slot& s, bool& fromB) {
     P& a = world.particleAt(s.a);
-    fromB = a.isStatic();
+    fromB = !kAnchored && a.isStatic();
     return fromB ? world.particleAt(s.b) : a;
   }
 
@@ -125,20 +133,20 @@ struct LoneRods {
   // end's change of speed along u. (Through the chains' rightSide() it
   // cost 400 cycles more.) With two movable ends, the same for their
   // relative motion, shared between them (shareBoth()).
-  template <bool kTwoMovable>
+  template <bool kTwoMovable, bool kAnchored>
   static void shake(W& world, const Slot& s, Pass& pass) {
-    const uint8_t moving = movingEnds<kTwoMovable>(world, s);
+    const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
     if (moving == 0) return;
     const bool both = kTwoMovable && moving == 2;
     bool fromB;
-    P& end = movingEnd(world, s, fromB);  // a when both move
+    P& end = movingEnd<kAnchored>(world, s, fromB);  // a when both move
     V u = Rods::linkOf(s).direction;
     V d = end.position;
     if (fromB) {
       u = -u;
       detail::subtractNonZero(d, world.particleAt(s.a).position);
     } else {
-      detail::subtractNonZero(d, s.b == kAnchorIndex
+      detail::subtractNonZero(d, kAnchored || s.b == kAnchorIndex
                                      ? Rods::linkOf(s).anchor
                                      : world.particleAt(s.b).position);
     }
@@ -162,9 +170,9 @@ struct LoneRods {
   }
 
   // The new direction, and the velocity solve: no speed along the rod.
-  template <bool kTwoMovable>
+  template <bool kTwoMovable, bool kAnchored>
   static void rattle(W& world, Slot& s, bool unit) {
-    const uint8_t moving = movingEnds<kTwoMovable>(world, s);
+    const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
     if (moving == 0) return;
     Rods::setDirection(Rods::span(world, s), Rods::linkOf(s), unit);
     if (kTwoMovable && moving == 2) {
@@ -172,15 +180,16 @@ struct LoneRods {
       return;
     }
     bool fromB;
-    P& end = movingEnd(world, s, fromB);
+    P& end = movingEnd<kAnchored>(world, s, fromB);
     removeRadial(end.velocity, Rods::linkOf(s).direction);
   }
 
   // How many ends of the rod move: 0, 1 or 2 (at most 1 without
   // kTwoMovable: b is an anchor, or the world's rods each have one
   // immovable end, LoneRods::allLone()).
-  template <bool kTwoMovable>
+  template <bool kTwoMovable, bool kAnchored>
   static uint8_t movingEnds(W& world, const Slot& s) {
+    if (kAnchored) return uint8_t(!isImmovable(world, s.a));
     if (!kTwoMovable) {
       return uint8_t(!isImmovable(world, s.a) || !isImmovable(world, s.b));
     }
@@ -221,14 +230,17 @@ struct LoneRods {
       b.position.addScaled(u, -(error - error * share));
     }
   }
+  // RATTLE for two moving ends: their relative speed along u, r, is taken
+  // out as a change -r shared as above (shareBoth(): a gets (-r) w, which
+  // is -(r w) to the bit, as a product rounds ties away from zero; b gets
+  // -((-r) - (-r) w) = r - r w; in fixed point all but r = S::lowest(),
+  // which -r saturates: a relative speed no step reaches).
   TINYPARTICLE_NOINLINE static void rattleBoth(W& world, const Slot& s) {
-    P& a = world.particleAt(s.a);
-    P& b = world.particleAt(s.b);
     const V& u = Rods::linkOf(s).direction;
-    const S radial = dot(a.velocity - b.velocity, u);
-    const S share = shareOfA(a, b);
-    a.velocity.addScaled(u, -(radial * share));
-    b.velocity.addScaled(u, radial - radial * share);
+    const S radial = dot(world.particleAt(s.a).velocity -
+                             world.particleAt(s.b).velocity,
+                         u);
+    shareBoth(world, s, -radial, S());
   }
 };
 

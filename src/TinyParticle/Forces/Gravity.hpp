@@ -38,15 +38,19 @@ struct GravityForce {
     }
   }
 
+  // Two runners, so that a sketch links only the one it uses: gravity on
+  // every particle (runUniform(), World::addGravity()) hands the
+  // acceleration to the world; gravity on one particle (runOn()) adds it to
+  // that particle's accumulator.
   template <class W>
-  static void run(W& world, typename W::ForceSlot& slot, S dt) {
-    const GravityForce& g = InSlot::of<GravityForce>(slot);
-    if (slot.a != kAllIndex) {
-      Particle<S, Dim>& p = WorldAccess::particle(world, slot.a);
-      if (!p.isStatic()) g.apply(p, dt);
-    } else {
-      WorldAccess::addUniformAcceleration(world, g.acceleration);
-    }
+  static void runUniform(W& world, typename W::ForceSlot& slot, S) {
+    WorldAccess::addUniformAcceleration(
+        world, InSlot::of<GravityForce>(slot).acceleration);
+  }
+  template <class W>
+  static void runOn(W& world, typename W::ForceSlot& slot, S dt) {
+    Particle<S, Dim>& p = WorldAccess::particle(world, slot.a);
+    if (!p.isStatic()) InSlot::of<GravityForce>(slot).apply(p, dt);
   }
 };
 

@@ -17,7 +17,7 @@
 //     the multiplies by dt are rounding shifts (Math/Scaler.hpp). For a
 //     float scalar the new velocity and position are checked here, the
 //     one place that touches them all: one that is inf or NaN stops the
-//     particle and raises WorldError::kNonFinite (see nonFinite());
+//     particle and raises WorldError::kNonFinite (see World/ParticleSteps.hpp);
 //  3. contact generators (rods, cables, planes, collisions) fill the contact
 //     pool;
 //  4. the resolver (Contacts/Resolver.hpp) resolves them; for a float
@@ -50,6 +50,7 @@
 #include "../Math/Zero.hpp"
 #include "../Core/Handle.hpp"
 #include "../Core/Particle.hpp"
+#include "ParticleSteps.hpp"
 #include "RodState.hpp"
 #include "Sleep.hpp"
 #include "Slots.hpp"
@@ -114,6 +115,8 @@ class World
   typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
       SleepStore;
   typedef GravityForce<S, Dim> GravityType;
+  // The step's work on the particles, shared by every World<S, Dim, ...>.
+  typedef detail::ParticleSteps<S, Dim> Steps;
   // Generators and the renderer reach the slots and the step's uniform
   // acceleration through it (Core/Access.hpp).
   friend class WorldAccess;
@@ -234,14 +237,14 @@ class World
   ForceId addGravity() { return addGravity(standardGravity()); }
   ForceId addGravity(const Vec& acceleration) {
     return placeForce(kAllIndex, kNoIndex, GravityType::make(acceleration),
-                      &GravityType::template run<World>);
+                      &GravityType::template runUniform<World>);
   }
   // Gravity for one particle, standard gravity times `multiplier`.
   ForceId addGravity(ParticleId target, S multiplier = S(1)) {
     if (!check(target)) return ForceId();
     return placeForce(target.index, kNoIndex,
                       GravityType::make(standardGravity() * multiplier),
-                      &GravityType::template run<World>);
+                      &GravityType::template runOn<World>);
   }
 
   // Drag k1 |v| + k2 |v|^2 against the velocity, on every particle or one.
@@ -736,17 +739,9 @@ class World
         rest[k] = whole - detail::half(whole);
       }
     }
-    for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
-      if (!isMoving(p)) continue;
-      if (!moveParticle(p, byDt)) continue;
-      if (kForces != 0) {
-        accelerate(p.velocity.x, S(), rest.x, byDt);
-        accelerate(p.velocity.y, S(), rest.y, byDt);
-        if (Dim == 3) accelerate(p.velocity[2], S(), rest[2], byDt);
-      }
-    }
+    Steps::movePositions(&particleAt(0), kParticles, rest, byDt, mError);
   }
+
 
   // During a step, for contact generators: multiplies by the step's dt.
   const Scaler<S>& stepScaler() const {
@@ -903,118 +898,18 @@ class World
         }
       }
     }
-    S dampingUnit = S();
-    bool haveDampingUnit = false;
-    for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
-      if (!isMoving(p)) continue;
-      // One axis at a time, written out: a loop over the axes would select
-      // the component at every access.
-      accelerate(p.velocity.x, p.acceleration.x, uniformStep.x, byDt);
-      accelerate(p.velocity.y, p.acceleration.y, uniformStep.y, byDt);
-      if (Dim == 3) {
-        accelerate(p.velocity[2], p.acceleration[2], uniformStep[2], byDt);
-      }
-      if (p.damping != 0) {
-        if (!haveDampingUnit) {
-          dampingUnit = byDt.factor() * S(1.0 / 256);
-          haveDampingUnit = true;
-        }
-        S loss = S(long(p.damping)) * dampingUnit;
-        if (loss >= S(1)) {
-          p.velocity = Vec();
-        } else {
-          p.velocity.addScaled(p.velocity, -loss);
-        }
-      }
-      // A float state that left the finite numbers (a diverging scene) is
-      // flagged, and the particle stops (see nonFinite()): two bit tests
-      // for the velocity, two for the position. Nothing at all for fixed
-      // point, whose values are always finite.
-      if (detail::isNonFinite(p.velocity)) {
-        nonFinite(p);
-        continue;
-      }
-      if (andMove) moveParticle(p, byDt);
-    }
+    Steps::template integrate<kConstraints == 0>(
+        &particleAt(0), kParticles, uniformStep, byDt, andMove, mError);
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
   }
 
-  // In use and movable: what the integrator steps.
-  static bool isMoving(const ParticleType& p) {
-    return (p.flags & (ParticleType::kInUse | ParticleType::kStatic |
-                       ParticleType::kAsleep)) == ParticleType::kInUse;
+  static bool isMoving(const ParticleType& p) { return Steps::isMoving(p); }
+  // x += v dt (see ParticleSteps::move()).
+  bool moveParticle(ParticleType& p, const Scaler<S>& byDt) {
+    return Steps::move(p, byDt, mError);
   }
-
-  // x += v dt; false (and the particle stopped, see nonFinitePosition())
-  // when the new position is not finite (float only).
-  TINYPARTICLE_ALWAYS_INLINE bool moveParticle(ParticleType& p,
-                                               const Scaler<S>& byDt) {
-    move(p.position.x, p.velocity.x, byDt);
-    move(p.position.y, p.velocity.y, byDt);
-    if (Dim == 3) move(p.position[2], p.velocity[2], byDt);
-    if (!detail::isNonFinite(p.position)) return true;
-    nonFinitePosition(p);
-    return false;
-  }
-
-  // A particle whose new velocity is not finite (float only) keeps the
-  // position it had (finite: it was checked when it moved) and stops: its
-  // velocity becomes zero, and WorldError::kNonFinite is raised. Out of
-  // line: rare.
-  TINYPARTICLE_NOINLINE void nonFinite(ParticleType& p) {
-    p.velocity = Vec();
-    mError |= WorldError::kNonFinite;
-    TINYPARTICLE_DEBUG_PRINT("non-finite state: particle stopped");
-  }
-  // A position that left the range while moving (a finite but huge
-  // velocity, or a position set to inf or NaN from outside): each such
-  // component saturates at S::largest() or S::lowest() (a NaN becomes 0),
-  // as fixed point would, and the particle stops as above. (Going back to
-  // the position before the move would need a copy of it for every
-  // particle and step: +300 cycles each on the Nano, measured.)
-  TINYPARTICLE_NOINLINE void nonFinitePosition(ParticleType& p) {
-    for (uint8_t k = 0; k < Dim; ++k) {
-      S& x = p.position[k];
-      if (!detail::isNonFinite(x)) continue;
-      x = x > S() ? S::largest() : (x < S() ? S::lowest() : S());
-    }
-    nonFinite(p);
-  }
-
-  // What the rods and contacts leave is checked too, so that the state a
-  // step leaves is finite or flagged: contacts fed extreme input (a
-  // restitution far above 1, found by extras/fuzz) can take a float
-  // velocity or position beyond range after integrate() checked it. The
-  // particle is treated as there (nonFinitePosition(), nonFinite()). For
-  // fixed point the test is a constant false and the loop disappears.
   void checkFiniteAfterContacts() {
-    for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
-      if (!isMoving(p)) continue;
-      if (detail::isNonFinite(p.position)) {
-        nonFinitePosition(p);
-      } else if (detail::isNonFinite(p.velocity)) {
-        nonFinite(p);
-      }
-    }
-  }
-
-  // One axis of a step: v += a dt + (uniform a) dt, then x += v dt. Zeros
-  // are skipped: an accumulator is usually empty (gravity is uniform) and
-  // resting particles have no velocity, and a compare costs far less than
-  // a multiply (or a shift) and an add. Inlined: a call would cost more
-  // in saved registers than the work.
-  TINYPARTICLE_ALWAYS_INLINE static void accelerate(S& velocity,
-                                                    S acceleration,
-                                                    S uniformStep,
-                                                    const Scaler<S>& byDt) {
-    if (!detail::isZero(acceleration)) velocity += byDt(acceleration);
-    if (!detail::isZero(uniformStep)) velocity += uniformStep;
-  }
-  TINYPARTICLE_ALWAYS_INLINE static void move(S& position, S velocity,
-                                              const Scaler<S>& byDt) {
-    if (!detail::isZero(velocity)) position += byDt(velocity);
+    Steps::checkFinite(&particleAt(0), kParticles, mError);
   }
 
   // For WorldAccess (force slots: the renderer; the uniform acceleration:
