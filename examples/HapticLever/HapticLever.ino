@@ -67,6 +67,14 @@
 
 typedef Q16_16 S;
 
+// Arithmetic on constants that the compiler folds. Fixed's operators run
+// through inline assembly (for their overflow checks), which it cannot fold:
+// -kPushLimit would be computed at run time, at every use.
+constexpr S negative(S constant) { return S::fromRaw(-constant.raw()); }
+// a * n without rounding (the product of a value and a whole number is
+// exact in fixed point): for |a * n| well inside Q16.16's range, as here.
+inline S timesWhole(S a, int16_t n) { return S::fromRaw(a.raw() * n); }
+
 // ---- Wiring (extras/doc/wiring.md) ---------------------------------------
 const uint8_t kFsrDownPin = A0;     // squeezed when the user pushes down
 const uint8_t kFsrUpPin = A1;       // squeezed when the user pushes up
@@ -172,7 +180,7 @@ const S kPushLimit(40);       // N: the most the damper may make of a push
 // and lever inertia; much shorter or longer ones let the held short lever
 // oscillate again.
 const S kServoLead(0.0275);   // s
-const S kPushLead(0.0175);    // s
+const double kPushLead = 0.0175;  // s
 
 // For measurements only (the device simulator in extras/hil defines it):
 // a pin that changes state at every pass of loop(), so that each pass can be
@@ -245,7 +253,7 @@ S forceScale;              // 1/s^2: the user's force on the end / its offset
 
 void setLeverLength(int reading) {
   dialReading = reading;
-  const S length = kShortest + kLengthSpan * S(reading);
+  const S length = kShortest + timesWhole(kLengthSpan, reading);
   world.setLength(lever.rod, length);
   leverLength = length;
   inverseLengthSquared = S(1) / (length * length);
@@ -319,10 +327,11 @@ void prepareStep() {
       (change.raw() * long(timing.stepsPerSecond()) - pushRate.raw()) >> 3);
   S felt = push + pushRate * kForceLead;
   if (felt > kPushLimit) felt = kPushLimit;
-  if (felt < -kPushLimit) felt = -kPushLimit;
+  if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
   const Vec2<S>& end = world.particle(lever.end)->position;
   forceScale = felt * forcePerNewton;
-  userForce = Vec2<S>(-end.y * forceScale, end.x * forceScale);
+  userForce.x = -end.y * forceScale;
+  userForce.y = end.x * forceScale;
 }
 
 // The lever's angle from level, asin(y / L) of the end's height: within
@@ -346,11 +355,13 @@ void commandServo() {
   // Gravity's angular acceleration is -g x / L^2, the user's forceScale /
   // mass (the end's 0.1 kg, from buildLever()); their sum, the lever's,
   // looks kPushLead ahead (see there).
-  const S gravity = -(S(9.81) * x.x * inverseLengthSquared);
+  // (forceScale x 10 stays below 310: the push is limited to kPushLimit.)
+  const S gravity = S(9.81) * x.x * inverseLengthSquared;
   S angle = leverRadians() + turnRate * kServoLead +
-            (gravity + forceScale * S(10)) * (kPushLead * kPushLead * S(0.5));
+            (timesWhole(forceScale, 10) - gravity) *
+                S(kPushLead * kPushLead * 0.5);
   if (stopHold != 0) {
-    angle = stopHold < 0 ? -kRangeRadians : kRangeRadians;
+    angle = stopHold < 0 ? negative(kRangeRadians) : kRangeRadians;
     stopHold += stopHold < 0 ? 1 : -1;
   }
   int32_t offset = ((angle * kServoUsPerRadian).raw() + 0x8000L) >> 16;
@@ -446,7 +457,6 @@ uint8_t appendHundredths(char* line, uint8_t n, S value) {
 bool writeStatus() {
   char line[kLineMax];
   const S degrees = leverRadians() * S(57.29578);
-  const S length = kShortest + kLengthSpan * S(dialReading);
   uint8_t n = 0;
   if (kPlotter) {
     n = appendText(line, n, F("angle:"));
@@ -454,14 +464,14 @@ bool writeStatus() {
     n = appendText(line, n, F(" force:"));
     n = appendHundredths(line, n, push);
     n = appendText(line, n, F(" length:"));
-    n = appendHundredths(line, n, length);
+    n = appendHundredths(line, n, leverLength);
   } else {
     n = appendText(line, n, F("angle "));
     n = appendHundredths(line, n, degrees);
     n = appendText(line, n, F(" deg  push "));
     n = appendHundredths(line, n, push);
     n = appendText(line, n, F(" N  length "));
-    n = appendHundredths(line, n, length);
+    n = appendHundredths(line, n, leverLength);
     n = appendText(line, n, F(" m"));
   }
   line[n++] = '\r';
