@@ -250,6 +250,7 @@ S inverseLengthSquared;    // 1 / m^2 of the virtual lever
 S inverseLength;           // 1 / m of the virtual lever
 S forcePerNewton;          // sensor distance / length^2: push to end force
 S forceScale;              // 1/s^2: the user's force on the end / its offset
+S stopX, stopY;            // m: the end at the upper range end (lower: y < 0)
 
 void setLeverLength(int reading) {
   dialReading = reading;
@@ -259,6 +260,8 @@ void setLeverLength(int reading) {
   inverseLengthSquared = S(1) / (length * length);
   inverseLength = length * inverseLengthSquared;
   forcePerNewton = kSensorDistance * inverseLengthSquared;
+  stopX = kStopCos * length;
+  stopY = kStopSin * length;
 }
 
 // Collects a finished conversion and starts the next; false if none was
@@ -280,35 +283,36 @@ bool serviceInputs() {
 }
 
 // ---- The range ends -------------------------------------------------------
-// Past the line of either end (the rod at +-32.5 degrees), the lever's end
-// is put back on it and, if it is still moving out, sent back with half its
-// speed, or stopped when it is slower than kRestingSpeed. u is the range
-// end's direction (unit); the angle grows along t = (-u.y, u.x).
+// Above or below either end (the rod at +-32.5 degrees: the end's height
+// beyond +-stopY), the lever's end is put back on it and, if it is still
+// moving out, sent back with half its speed, or stopped when it is slower
+// than kRestingSpeed. u is the range end's direction (unit); the angle
+// grows along t = (-u.y, u.x).
 const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
-void rangeEnd(Vec2<S>& position, Vec2<S>& velocity, S ux, S uy) {
-  const S speed = velocity.y * ux - velocity.x * uy;  // along t
-  const bool outward = (uy < S()) ? speed < S() : speed > S();
-  position = Vec2<S>(ux * leverLength, uy * leverLength);
-  if (!outward) return;
-  const S back = (speed > kRestingSpeed || speed < -kRestingSpeed)
-                     ? -(speed * kEndBounce) : S();
-  velocity = Vec2<S>(-uy * back, ux * back);
-  // The servo takes a new angle only every 20 ms: after a bounce it is kept
-  // at the range end for a little longer than that, or the prediction turns
-  // it back before the felt lever has reached the end.
-  if (back != S()) stopHold = (uy < S()) ? -kStopHoldSteps : kStopHoldSteps;
-}
-
 void rangeEnds() {
   HapticWorld::ParticleType* end = world.particle(lever.end);
-  const Vec2<S>& x = end->position;
-  if (kStopCos * x.y + kStopSin * x.x < S()) {
-    rangeEnd(end->position, end->velocity, kStopCos, -kStopSin);
-  } else if (kStopCos * x.y - kStopSin * x.x > S()) {
-    rangeEnd(end->position, end->velocity, kStopCos, kStopSin);
+  Vec2<S>& x = end->position;
+  Vec2<S>& v = end->velocity;
+  const S lowerStopY = S::fromRaw(-stopY.raw());
+  const bool lower = x.y < lowerStopY;
+  if (!lower && !(x.y > stopY)) return;
+  x.x = stopX;
+  x.y = lower ? lowerStopY : stopY;
+  const S tx = lower ? kStopSin : negative(kStopSin);
+  const S speed = v.x * tx + v.y * kStopCos;  // along t
+  if (lower ? speed >= S() : speed <= S()) return;  // not moving out
+  S back = S();
+  if (speed > kRestingSpeed || speed < negative(kRestingSpeed)) {
+    back = -(speed * kEndBounce);
+    // The servo takes a new angle only every 20 ms: after a bounce it is
+    // kept at the range end for a little longer than that, or the
+    // prediction turns it back before the felt lever has reached the end.
+    stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
   }
+  v.x = tx * back;
+  v.y = kStopCos * back;
 }
 
 // ---- Between steps --------------------------------------------------------
