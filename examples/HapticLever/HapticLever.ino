@@ -234,6 +234,15 @@ struct AnalogInput {
 int AnalogInput::last = 0;
 #endif
 
+// A conversion waited for, in setup() only (the same conversion as
+// analogRead(), without linking it).
+int readAnalogNow(uint8_t pin) {
+  AnalogInput::start(pin);
+  while (!AnalogInput::ready()) {
+  }
+  return AnalogInput::value();
+}
+
 // The inputs in turn: down, up, down, up, ... and the dial every 32nd.
 uint8_t inputTurn = 0;
 uint8_t inputPin() {
@@ -490,19 +499,19 @@ void setup() {
   Serial.begin(115200);
   // The push starts from the sensors as they are (a hand may already be on
   // the lever), not from zero: a push from nothing would kick the weight.
-  downNewtons = fsrNewtons(analogRead(kFsrDownPin));
-  upNewtons = fsrNewtons(analogRead(kFsrUpPin));
+  AnalogInput::begin();
+  downNewtons = fsrNewtons(readAnalogNow(kFsrDownPin));
+  upNewtons = fsrNewtons(readAnalogNow(kFsrUpPin));
   push = downNewtons - upNewtons;
   leverServo.attach(kServoPin, kServoMinUs, kServoMaxUs);
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
   lever = buildLever(world, &userForce, kShortest);
-  setLeverLength(analogRead(kLengthDialPin));
+  setLeverLength(readAnalogNow(kLengthDialPin));
   // The first step needs the push as a force too (later steps get it from
   // the pass before them), or gravity alone acts for that step.
   prepareStep();
-  AnalogInput::begin();
   AnalogInput::start(inputPin());
   if (!kPlotter) {
     Serial.println(F("HapticLever: push the lever; turn the dial for its length"));
