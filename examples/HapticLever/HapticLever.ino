@@ -412,7 +412,10 @@ uint16_t pulseEndMicros;   // micros() when the last pulse was seen ending
 uint8_t servoPinState = 0; // bit 0: a pulse is on; bit 1: one has ended
 
 void watchServoPulse() {
-  const bool high = digitalRead(kServoPin) == HIGH;
+  // The pin's input register, as digitalRead() reads it (without its
+  // check for a PWM timer, which the servo pin does not use).
+  const bool high = *portInputRegister(digitalPinToPort(kServoPin)) &
+                    digitalPinToBitMask(kServoPin);
   if (high) {
     servoPinState |= 1;
   } else if (servoPinState & 1) {
