@@ -131,7 +131,7 @@ S fsrNewtons(int reading) {
   if (reading <= 0) return S();
   if (reading > kFsrLimit) reading = kFsrLimit;
   const S x(reading);
-  const S u = x * S(1.0 / 1024);
+  const S u = S::fromRaw(long(reading) * 64);  // x / 1024, exactly
   const S denominator =
       (S(-13.664495) * u + S(10.894753)) * u + S(2.30339406);
   return x / denominator * S(0.00981);
@@ -517,7 +517,7 @@ void setup() {
   prepareStep();
   AnalogInput::start(inputPin());
   if (!kPlotter) {
-    Serial.println(F("HapticLever: push the lever; turn the dial for its length"));
+    Serial.print(F("HapticLever: push the lever; turn the dial for its length\r\n"));
   }
 }
 
