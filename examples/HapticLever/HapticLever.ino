@@ -546,7 +546,8 @@ void loop() {
   if (serviceInputs()) return;
   if (output == kIdle && timing.frameDue()) output = kPlotter ? kStatus : kFrame;
   if (output == kIdle || timing.microsToNextStep() < 100) return;
-  if (output == kFrame) {
+  // (!kPlotter: in plotter mode the renderer's code is not linked.)
+  if (!kPlotter && output == kFrame) {
     if (Serial.availableForWrite() >= renderer.lineLength() &&
         serialQuiet(renderer.lineLength()) &&
         renderer.drawLine(world, Serial)) {
