@@ -67,6 +67,14 @@
 
 typedef Q16_16 S;
 
+// Arithmetic on constants that the compiler folds. Fixed's operators run
+// through inline assembly (for their overflow checks), which it cannot fold:
+// -kPushLimit would be computed at run time, at every use.
+constexpr S negative(S constant) { return S::fromRaw(-constant.raw()); }
+// a * n without rounding (the product of a value and a whole number is
+// exact in fixed point): for |a * n| well inside Q16.16's range, as here.
+inline S timesWhole(S a, int16_t n) { return S::fromRaw(a.raw() * n); }
+
 // ---- Wiring (extras/doc/wiring.md) ---------------------------------------
 const uint8_t kFsrDownPin = A0;     // squeezed when the user pushes down
 const uint8_t kFsrUpPin = A1;       // squeezed when the user pushes up
@@ -123,7 +131,7 @@ S fsrNewtons(int reading) {
   if (reading <= 0) return S();
   if (reading > kFsrLimit) reading = kFsrLimit;
   const S x(reading);
-  const S u = x * S(1.0 / 1024);
+  const S u = S::fromRaw(long(reading) * 64);  // x / 1024, exactly
   const S denominator =
       (S(-13.664495) * u + S(10.894753)) * u + S(2.30339406);
   return x / denominator * S(0.00981);
@@ -172,7 +180,7 @@ const S kPushLimit(40);       // N: the most the damper may make of a push
 // and lever inertia; much shorter or longer ones let the held short lever
 // oscillate again.
 const S kServoLead(0.0275);   // s
-const S kPushLead(0.0175);    // s
+const double kPushLead = 0.0175;  // s
 
 // For measurements only (the device simulator in extras/hil defines it):
 // a pin that changes state at every pass of loop(), so that each pass can be
@@ -226,6 +234,15 @@ struct AnalogInput {
 int AnalogInput::last = 0;
 #endif
 
+// A conversion waited for, in setup() only (the same conversion as
+// analogRead(), without linking it).
+int readAnalogNow(uint8_t pin) {
+  AnalogInput::start(pin);
+  while (!AnalogInput::ready()) {
+  }
+  return AnalogInput::value();
+}
+
 // The inputs in turn: down, up, down, up, ... and the dial every 32nd.
 uint8_t inputTurn = 0;
 uint8_t inputPin() {
@@ -239,16 +256,24 @@ S pushRate;                // N/s, averaged
 int dialReading = -100;    // the dial's reading behind the lever length
 S leverLength;             // m, the virtual lever
 S inverseLengthSquared;    // 1 / m^2 of the virtual lever
+S inverseLength;           // 1 / m of the virtual lever
 S forcePerNewton;          // sensor distance / length^2: push to end force
 S forceScale;              // 1/s^2: the user's force on the end / its offset
+S stopX, stopY;            // m: the end at the upper range end (lower: y < 0)
 
 void setLeverLength(int reading) {
   dialReading = reading;
-  const S length = kShortest + kLengthSpan * S(reading);
+  const S length = kShortest + timesWhole(kLengthSpan, reading);
   world.setLength(lever.rod, length);
   leverLength = length;
   inverseLengthSquared = S(1) / (length * length);
+  // Its own quotient: L x (1 / L^2) would carry the error of L^2, which
+  // Q16.16 holds to 1e-4 of itself at 0.23 m (the angle at the stops then
+  // printed as 32.49 deg).
+  inverseLength = S(1) / length;
   forcePerNewton = kSensorDistance * inverseLengthSquared;
+  stopX = kStopCos * length;
+  stopY = kStopSin * length;
 }
 
 // Collects a finished conversion and starts the next; false if none was
@@ -270,35 +295,36 @@ bool serviceInputs() {
 }
 
 // ---- The range ends -------------------------------------------------------
-// Past the line of either end (the rod at +-32.5 degrees), the lever's end
-// is put back on it and, if it is still moving out, sent back with half its
-// speed, or stopped when it is slower than kRestingSpeed. u is the range
-// end's direction (unit); the angle grows along t = (-u.y, u.x).
+// Above or below either end (the rod at +-32.5 degrees: the end's height
+// beyond +-stopY), the lever's end is put back on it and, if it is still
+// moving out, sent back with half its speed, or stopped when it is slower
+// than kRestingSpeed. u is the range end's direction (unit); the angle
+// grows along t = (-u.y, u.x).
 const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
-void rangeEnd(Vec2<S>& position, Vec2<S>& velocity, S ux, S uy) {
-  const S speed = velocity.y * ux - velocity.x * uy;  // along t
-  const bool outward = (uy < S()) ? speed < S() : speed > S();
-  position = Vec2<S>(ux * leverLength, uy * leverLength);
-  if (!outward) return;
-  const S back = (speed > kRestingSpeed || speed < -kRestingSpeed)
-                     ? -(speed * kEndBounce) : S();
-  velocity = Vec2<S>(-uy * back, ux * back);
-  // The servo takes a new angle only every 20 ms: after a bounce it is kept
-  // at the range end for a little longer than that, or the prediction turns
-  // it back before the felt lever has reached the end.
-  if (back != S()) stopHold = (uy < S()) ? -kStopHoldSteps : kStopHoldSteps;
-}
-
 void rangeEnds() {
   HapticWorld::ParticleType* end = world.particle(lever.end);
-  const Vec2<S>& x = end->position;
-  if (kStopCos * x.y + kStopSin * x.x < S()) {
-    rangeEnd(end->position, end->velocity, kStopCos, -kStopSin);
-  } else if (kStopCos * x.y - kStopSin * x.x > S()) {
-    rangeEnd(end->position, end->velocity, kStopCos, kStopSin);
+  Vec2<S>& x = end->position;
+  Vec2<S>& v = end->velocity;
+  const S lowerStopY = S::fromRaw(-stopY.raw());
+  const bool lower = x.y < lowerStopY;
+  if (!lower && !(x.y > stopY)) return;
+  x.x = stopX;
+  x.y = lower ? lowerStopY : stopY;
+  const S tx = lower ? kStopSin : negative(kStopSin);
+  const S speed = v.x * tx + v.y * kStopCos;  // along t
+  if (lower ? speed >= S() : speed <= S()) return;  // not moving out
+  S back = S();
+  if (speed > kRestingSpeed || speed < negative(kRestingSpeed)) {
+    back = -(speed * kEndBounce);
+    // The servo takes a new angle only every 20 ms: after a bounce it is
+    // kept at the range end for a little longer than that, or the
+    // prediction turns it back before the felt lever has reached the end.
+    stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
   }
+  v.x = tx * back;
+  v.y = kStopCos * back;
 }
 
 // ---- Between steps --------------------------------------------------------
@@ -317,15 +343,21 @@ void prepareStep() {
       (change.raw() * long(timing.stepsPerSecond()) - pushRate.raw()) >> 3);
   S felt = push + pushRate * kForceLead;
   if (felt > kPushLimit) felt = kPushLimit;
-  if (felt < -kPushLimit) felt = -kPushLimit;
+  if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
   const Vec2<S>& end = world.particle(lever.end)->position;
   forceScale = felt * forcePerNewton;
-  userForce = Vec2<S>(-end.y * forceScale, end.x * forceScale);
+  userForce.x = -end.y * forceScale;
+  userForce.y = end.x * forceScale;
 }
 
+// The lever's angle from level, asin(y / L) of the end's height: within
+// the range ends (sin 32.5 deg = 0.537) an odd polynomial fitted up to 0.56
+// is within 3.4e-5 rad of it (0.02 us of servo command), as close as
+// atan2(), without its code and table.
 S leverRadians() {
-  const Vec2<S>& end = world.particle(lever.end)->position;
-  return atan2(end.y, end.x);
+  const S s = world.particle(lever.end)->position.y * inverseLength;
+  const S s2 = s * s;
+  return s + s * s2 * (S(0.163293) + S(0.103055) * s2);
 }
 
 // The servo is sent the angle the lever will have a little later, from its
@@ -339,11 +371,13 @@ void commandServo() {
   // Gravity's angular acceleration is -g x / L^2, the user's forceScale /
   // mass (the end's 0.1 kg, from buildLever()); their sum, the lever's,
   // looks kPushLead ahead (see there).
-  const S gravity = -(S(9.81) * x.x * inverseLengthSquared);
+  // (forceScale x 10 stays below 310: the push is limited to kPushLimit.)
+  const S gravity = S(9.81) * x.x * inverseLengthSquared;
   S angle = leverRadians() + turnRate * kServoLead +
-            (gravity + forceScale * S(10)) * (kPushLead * kPushLead * S(0.5));
+            (timesWhole(forceScale, 10) - gravity) *
+                S(kPushLead * kPushLead * 0.5);
   if (stopHold != 0) {
-    angle = stopHold < 0 ? -kRangeRadians : kRangeRadians;
+    angle = stopHold < 0 ? negative(kRangeRadians) : kRangeRadians;
     stopHold += stopHold < 0 ? 1 : -1;
   }
   int32_t offset = ((angle * kServoUsPerRadian).raw() + 0x8000L) >> 16;
@@ -381,7 +415,10 @@ uint16_t pulseEndMicros;   // micros() when the last pulse was seen ending
 uint8_t servoPinState = 0; // bit 0: a pulse is on; bit 1: one has ended
 
 void watchServoPulse() {
-  const bool high = digitalRead(kServoPin) == HIGH;
+  // The pin's input register, as digitalRead() reads it (without its
+  // check for a PWM timer, which the servo pin does not use).
+  const bool high = *portInputRegister(digitalPinToPort(kServoPin)) &
+                    digitalPinToBitMask(kServoPin);
   if (high) {
     servoPinState |= 1;
   } else if (servoPinState & 1) {
@@ -439,7 +476,6 @@ uint8_t appendHundredths(char* line, uint8_t n, S value) {
 bool writeStatus() {
   char line[kLineMax];
   const S degrees = leverRadians() * S(57.29578);
-  const S length = kShortest + kLengthSpan * S(dialReading);
   uint8_t n = 0;
   if (kPlotter) {
     n = appendText(line, n, F("angle:"));
@@ -447,14 +483,14 @@ bool writeStatus() {
     n = appendText(line, n, F(" force:"));
     n = appendHundredths(line, n, push);
     n = appendText(line, n, F(" length:"));
-    n = appendHundredths(line, n, length);
+    n = appendHundredths(line, n, leverLength);
   } else {
     n = appendText(line, n, F("angle "));
     n = appendHundredths(line, n, degrees);
     n = appendText(line, n, F(" deg  push "));
     n = appendHundredths(line, n, push);
     n = appendText(line, n, F(" N  length "));
-    n = appendHundredths(line, n, length);
+    n = appendHundredths(line, n, leverLength);
     n = appendText(line, n, F(" m"));
   }
   line[n++] = '\r';
@@ -469,22 +505,22 @@ void setup() {
   Serial.begin(115200);
   // The push starts from the sensors as they are (a hand may already be on
   // the lever), not from zero: a push from nothing would kick the weight.
-  downNewtons = fsrNewtons(analogRead(kFsrDownPin));
-  upNewtons = fsrNewtons(analogRead(kFsrUpPin));
+  AnalogInput::begin();
+  downNewtons = fsrNewtons(readAnalogNow(kFsrDownPin));
+  upNewtons = fsrNewtons(readAnalogNow(kFsrUpPin));
   push = downNewtons - upNewtons;
   leverServo.attach(kServoPin, kServoMinUs, kServoMaxUs);
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
   lever = buildLever(world, &userForce, kShortest);
-  setLeverLength(analogRead(kLengthDialPin));
+  setLeverLength(readAnalogNow(kLengthDialPin));
   // The first step needs the push as a force too (later steps get it from
   // the pass before them), or gravity alone acts for that step.
   prepareStep();
-  AnalogInput::begin();
   AnalogInput::start(inputPin());
   if (!kPlotter) {
-    Serial.println(F("HapticLever: push the lever; turn the dial for its length"));
+    Serial.print(F("HapticLever: push the lever; turn the dial for its length\r\n"));
   }
 }
 
@@ -513,7 +549,8 @@ void loop() {
   if (serviceInputs()) return;
   if (output == kIdle && timing.frameDue()) output = kPlotter ? kStatus : kFrame;
   if (output == kIdle || timing.microsToNextStep() < 100) return;
-  if (output == kFrame) {
+  // (!kPlotter: in plotter mode the renderer's code is not linked.)
+  if (!kPlotter && output == kFrame) {
     if (Serial.availableForWrite() >= renderer.lineLength() &&
         serialQuiet(renderer.lineLength()) &&
         renderer.drawLine(world, Serial)) {
