@@ -248,8 +248,22 @@ struct Resolver {
     }
   }
 
-  // (Out of line: called from two places, and it is large.)
-  TINYPARTICLE_NOINLINE static void resolveOne(W& world, C& contact,
+  // A contact with scenery along an axis takes the short way (each is out
+  // of line: called from two places, and the general one is large; the
+  // short one's frame is small).
+  static void resolveOne(W& world, C& contact, const Scaler<S>& byDt,
+                         Change& change) {
+    S V::*axis;
+    bool positive;
+    if (contact.b == kNoIndex &&
+        detail::AxisNormal<S>::find(contact.normal, axis, positive)) {
+      resolveOnAxis(world, contact, byDt, change, axis, positive);
+    } else {
+      resolveAny(world, contact, byDt, change);
+    }
+  }
+
+  TINYPARTICLE_NOINLINE static void resolveAny(W& world, C& contact,
                                                const Scaler<S>& byDt,
                                                Change& change) {
     P& a = world.particleAt(contact.a);
@@ -358,6 +372,68 @@ struct Resolver {
     }
     change.touchedA = movesA;
     change.touchedB = movesB;
+  }
+
+  // resolveOne() for a contact with scenery (b: none) whose normal is an
+  // axis, the sign `positive` (a ball on the floor or against a wall, the
+  // most common contact): the same steps with one particle and one
+  // component, the same results, a third of the cycles.
+  TINYPARTICLE_NOINLINE static void resolveOnAxis(W& world, C& contact,
+                                                  const Scaler<S>& byDt,
+                                                  Change& change, S V::*axis,
+                                                  bool positive) {
+    P& a = world.particleAt(contact.a);
+    change.movedA = change.movedB = change.velocity = false;
+    change.touchedB = false;
+    if (a.isAsleep()) world.wakeAll();
+    change.touchedA = !a.isStatic();
+    if (!change.touchedA) {
+      contact.penetration = S();
+      contact.separatingVelocity = S();
+      return;
+    }
+    const S separating = contact.separatingVelocity;
+    S deltaV = S();
+    if (detail::isNegative(separating)) {
+      const S restitution = WorldAccess::restitutionOf(world, contact.source);
+      S target = S();
+      deltaV = -separating;
+      if (!detail::isZero(restitution)) {
+        // accelerationAlong(a, normal), resolveOne()'s alongA.
+        S along = a.acceleration.*axis;
+        if (W::kForceCapacity != 0) {
+          along = along + WorldAccess::uniformComponent(world, axis);
+        }
+        if (!positive) along = -along;
+        if (deltaV > byDt(fabs(along))) {
+          target = -(separating * restitution);
+          S built = byDt(along);
+          if (built < S()) {
+            target += restitution * built;
+            if (target < S()) target = S();
+          }
+          deltaV = target - separating;
+        }
+      }
+      contact.separatingVelocity = target;
+      change.velocity = true;
+    }
+    S penetration = contact.penetration;
+    const bool penetrating = detail::isPositive(penetration);
+    if (penetrating) {
+      contact.penetration = S();
+    } else {
+      penetration = S();
+    }
+    if (!positive) {
+      deltaV = -deltaV;
+      penetration = -penetration;
+    }
+    a.velocity.*axis += deltaV;
+    change.moveA = V();
+    change.moveA.*axis = penetration;
+    a.position.*axis += penetration;
+    change.movedA = penetrating;
   }
 };
 
