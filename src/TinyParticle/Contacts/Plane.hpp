@@ -19,6 +19,7 @@
 #include "../Core/Particle.hpp"
 #include "../Math/ScalarTraits.hpp"
 #include "../Core/Access.hpp"
+#include "Resolver.hpp"
 
 namespace tinyparticle {
 
@@ -219,8 +220,20 @@ struct PlaneConstraint {
     if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {
       return;
     }
-    WorldAccess::recordContact(world, i, kNoIndex, normal, penetration,
-                               separating, source);
+    // The particle is awake (isTarget()), so the contact wakes nobody:
+    // while the pool has room it is written here, without the call.
+    typename W::ContactType* c = Resolver<W>::takeFreeSlot(world);
+    if (c == nullptr) {
+      WorldAccess::recordContact(world, i, kNoIndex, normal, penetration,
+                                 separating, source);
+      return;
+    }
+    c->normal = normal;
+    c->penetration = penetration;
+    c->separatingVelocity = separating;
+    c->a = i;
+    c->b = kNoIndex;
+    c->source = source;
   }
 
   static bool isTarget(const Particle<S, Dim>& p) {

@@ -134,6 +134,16 @@ struct Resolver {
     return slot;
   }
 
+  // The pool's next free slot, taken; null when the pool is full (then
+  // World::recordContact() applies slotFor()). For a generator whose
+  // contact needs nothing else of recordContact(): it wakes nobody.
+  static C* takeFreeSlot(W& world) {
+    const uint8_t count = world.contactCount();
+    if (count >= W::kContactCapacity) return nullptr;
+    WorldAccess::takeContactSlot(world);
+    return &WorldAccess::contact(world, count);
+  }
+
   static S separatingVelocity(W& world, const C& c) {
     return separatingVelocity(world, c.a, c.b, c.normal);
   }
