@@ -151,18 +151,29 @@ struct PlaneConstraint {
     // walls: bit 2k for the low wall of axis k, 2k + 1 for its high wall.
     uint8_t walls[ParticleSlots<W>::value];
     uint8_t count = 0, touched = 0;
+    // The limits for the centre of a particle of radius r (x - r <= low +
+    // margin is x <= low + margin + r...), worked out again only when the
+    // radius changes: in most scenes every particle has the same one.
+    V low = lowLimit, high = highLimit;
+    S radius = S();
     const P* p = &WorldAccess::particle(world, 0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (!isTarget(*p)) continue;
-      const S r = p->radius;
+      if (!(p->radius == radius)) {
+        radius = p->radius;
+        for (uint8_t k = 0; k < W::kDimensions; ++k) {
+          low[k] = lowLimit[k] + radius;
+          high[k] = highLimit[k] - radius;
+        }
+      }
       uint8_t bits = 0;
-      if (!(p->position.x - r > lowLimit.x)) bits |= 1;
-      if (!(p->position.x + r < highLimit.x)) bits |= 2;
-      if (!(p->position.y - r > lowLimit.y)) bits |= 4;
-      if (!(p->position.y + r < highLimit.y)) bits |= 8;
+      if (!(p->position.x > low.x)) bits |= 1;
+      if (!(p->position.x < high.x)) bits |= 2;
+      if (!(p->position.y > low.y)) bits |= 4;
+      if (!(p->position.y < high.y)) bits |= 8;
       if (W::kDimensions == 3) {
-        if (!(p->position[2] - r > lowLimit[2])) bits |= 16;
-        if (!(p->position[2] + r < highLimit[2])) bits |= 32;
+        if (!(p->position[2] > low[2])) bits |= 16;
+        if (!(p->position[2] < high[2])) bits |= 32;
       }
       if (bits != 0) {
         near[count] = i;
