@@ -77,18 +77,26 @@ struct Resolver {
     // A contact whose particles are in no other contact changes no other
     // one, and no other one changes it: it is resolved once, in one pass,
     // with the same result as when the search below would have reached it
-    // (balls resting on the floor apart from each other), and the search
-    // is left with the contacts that share particles.
+    // (balls resting on the floor apart from each other). Resolved, it is
+    // neither closing nor penetrating, so the search and the updates after
+    // each resolution are left with the list of the contacts that share
+    // particles (in index order, so ties go as over the whole pool).
+    uint8_t linked[W::kContactCapacity > 0 ? W::kContactCapacity : 1];
+    uint8_t linkedCount = 0;
     uint8_t iterations = 0;
-    for (uint8_t j = 0; j < count && iterations < cap; ++j) {
+    for (uint8_t j = 0; j < count; ++j) {
       C& contact = contacts[j];
-      if (sharing.isShared(contact.a) || sharing.isShared(contact.b)) continue;
-      if (!isActive(contact, closing, deep)) continue;
+      if (sharing.isShared(contact.a) || sharing.isShared(contact.b)) {
+        linked[linkedCount++] = j;
+        continue;
+      }
+      if (iterations == cap || !isActive(contact, closing, deep)) continue;
       Change change;
       resolveOne(world, contact, byDt, change);
       ++iterations;
     }
-    uint8_t next = worstOf(contacts, count, closing, deep);
+    if (linkedCount == 0) return iterations;
+    uint8_t next = worstOf(contacts, linked, linkedCount, closing, deep);
     while (next != kNoIndex && iterations < cap) {
       C& contact = contacts[next];
       Change change;
@@ -98,9 +106,9 @@ struct Resolver {
       // so it is not picked again.)
       if ((change.touchedA && sharing.isShared(contact.a)) ||
           (change.touchedB && sharing.isShared(contact.b))) {
-        update(world, contacts, count, next, change);
+        update(world, contacts, linked, linkedCount, next, change);
       }
-      next = worstOf(contacts, count, closing, deep);
+      next = worstOf(contacts, linked, linkedCount, closing, deep);
     }
     return iterations;
   }
@@ -174,12 +182,16 @@ struct Resolver {
   // scalar (or, in float, that halve forever between a ball and the floor
   // under it) would be resolved again and again up to the cap. What they
   // leave is picked up by the next step.
-  static uint8_t worstOf(const C* c, uint8_t count, S closing, S deep) {
+  // Among the contacts of the list `linked` (indices, ascending).
+  static uint8_t worstOf(const C* contacts, const uint8_t* linked,
+                         uint8_t count, S closing, S deep) {
     uint8_t worstIndex = kNoIndex;
     S worst = S::largest();
-    for (uint8_t j = 0; j < count; ++j, ++c) {
-      const S separating = c->separatingVelocity;
-      if (separating < worst && isActive(*c, closing, deep)) {
+    for (uint8_t k = 0; k < count; ++k) {
+      const uint8_t j = linked[k];
+      const C& c = contacts[j];
+      const S separating = c.separatingVelocity;
+      if (separating < worst && isActive(c, closing, deep)) {
         worst = separating;
         worstIndex = j;
       }
@@ -232,13 +244,15 @@ struct Resolver {
   }
 
   // After a resolution: the penetration and separating velocity of every
-  // other contact that shares a particle it changed (kAllIndex matches no
-  // contact).
-  static void update(W& world, C* c, uint8_t count, uint8_t current,
-                     const Change& change) {
-    const uint8_t ta = change.touchedA ? c[current].a : kAllIndex;
-    const uint8_t tb = change.touchedB ? c[current].b : kAllIndex;
-    for (uint8_t j = 0; j < count; ++j, ++c) {
+  // other contact of the list `linked` that shares a particle it changed
+  // (kAllIndex matches no contact; the contacts off the list share none).
+  static void update(W& world, C* contacts, const uint8_t* linked,
+                     uint8_t count, uint8_t current, const Change& change) {
+    const uint8_t ta = change.touchedA ? contacts[current].a : kAllIndex;
+    const uint8_t tb = change.touchedB ? contacts[current].b : kAllIndex;
+    for (uint8_t k = 0; k < count; ++k) {
+      const uint8_t j = linked[k];
+      C* const c = &contacts[j];
       const uint8_t a = c->a, b = c->b;
       if (a != ta && a != tb && b != ta && b != tb) continue;
       if (j == current) continue;
