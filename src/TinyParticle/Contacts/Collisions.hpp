@@ -225,15 +225,23 @@ struct CollisionConstraint {
                                           uint8_t count, S spread,
                                           uint8_t source) {
     const S margin = W::contactMargin();
+    // The sums of a radius and the margin (reach) and of a radius and the
+    // spread (bound), worked out again only when the radius changes: in
+    // most scenes every particle has the same one.
+    S radius = S(), reach = margin, bound = spread;
     for (uint8_t m = 0; m + 1 < count; ++m) {
       const uint8_t i = entries[m].index;
       const P& p = world.particleAt(i);
-      const S reach = p.radius + margin;
+      if (!(p.radius == radius)) {
+        radius = p.radius;
+        reach = radius + margin;
+        bound = radius + spread;
+      }
       // Every later entry's centre is at or after this one's; those whose
       // centre is farther than this radius plus the largest one (and the
       // margin, and with swept contacts both moves along x), and all after
       // them, are apart along x.
-      S high = entries[m].x + (p.radius + spread);
+      S high = entries[m].x + bound;
       if (kSwept) high += moveOf(world, p, p.velocity.x);
       for (uint8_t n = m + 1; n < count && !(high < entries[n].x); ++n) {
         const uint8_t j = entries[n].index;
