@@ -124,9 +124,8 @@ struct PlaneConstraint {
         near[count++] = i;
       }
     }
-    for (uint8_t k = 0; k < count; ++k) {
-      touch(world, normal, along, positive, offset, near[k], source);
-    }
+    const Wall wall = {normal, along, offset, source, positive};
+    for (uint8_t k = 0; k < count; ++k) touch(world, wall, near[k]);
   }
 
   // The 2 Dim walls of a box in one pass over the particles: each one's
@@ -182,19 +181,22 @@ struct PlaneConstraint {
         ++count;
       }
     }
-    for (uint8_t wall = 0; wall < 2 * W::kDimensions; ++wall) {
-      const uint8_t bit = uint8_t(1u << wall);
+    for (uint8_t side = 0; side < 2 * W::kDimensions; ++side) {
+      const uint8_t bit = uint8_t(1u << side);
       if ((touched & bit) == 0) continue;  // no particle near this wall
-      const uint8_t axis = uint8_t(wall >> 1);
-      const bool positive = (wall & 1) == 0;
-      S V::*const along = detail::AxisMember<V>::of(axis);
-      V normal;
-      normal.*along = positive ? S(1) : S(-1);
+      const uint8_t axis = uint8_t(side >> 1);
+      Wall wall;
+      wall.positive = (side & 1) == 0;
+      wall.along = detail::AxisMember<V>::of(axis);
+      wall.normal = V();
+      wall.normal.*wall.along = wall.positive ? S(1) : S(-1);
       // As an axis plane's: offset = low, or minus high.
-      const S offset = positive ? box.low.*along : -(box.high.*along);
+      wall.offset = wall.positive ? box.low.*wall.along
+                                  : -(box.high.*wall.along);
+      wall.source = source;
       for (uint8_t k = 0; k < count; ++k) {
         if ((walls[k] & bit) == 0) continue;
-        touch(world, normal, along, positive, offset, near[k], source);
+        touch(world, wall, near[k]);
       }
     }
   }
@@ -208,18 +210,30 @@ struct PlaneConstraint {
         W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
   };
 
-  // Particle i within the margin of the axis plane of `offset` (see
-  // generateAxis(): the bound, or minus it for a negative normal). Its
+  // An axis plane, or one wall of a box, as touch() takes it (one
+  // argument, not five: the call costs less): its normal (+e or -e), that
+  // axis's member, the offset, the constraint slot, and the normal's sign.
+  struct Wall {
+    Vec<S, Dim> normal;
+    S Vec<S, Dim>::*along;
+    S offset;
+    uint8_t source;
+    bool positive;
+  };
+
+  // Particle i within the margin of the wall (its offset: see
+  // generateAxis(), the bound, or minus it for a negative normal). Its
   // penetration, separating velocity and acceleration along the normal are
   // that coordinate of its position (less or plus its radius), velocity and
   // acceleration, with the normal's sign (exactly what the dot products
   // give); the sign does not matter for the acceleration, only whether it
   // is zero (WorldAccess::isIdle<W>()).
   template <class W>
-  TINYPARTICLE_NOINLINE static void touch(W& world, const Vec<S, Dim>& normal,
-                                          S Vec<S, Dim>::*along,
-                                          bool positive, S offset, uint8_t i,
-                                          uint8_t source) {
+  TINYPARTICLE_NOINLINE static void touch(W& world, const Wall& wall,
+                                          uint8_t i) {
+    S Vec<S, Dim>::*const along = wall.along;
+    const bool positive = wall.positive;
+    const S offset = wall.offset;
     const Particle<S, Dim>& p = WorldAccess::particle(world, i);
     const S side = positive ? p.position.*along - p.radius
                             : p.position.*along + p.radius;
@@ -235,16 +249,16 @@ struct PlaneConstraint {
     // while the pool has room it is written here, without the call.
     typename W::ContactType* c = Resolver<W>::takeFreeSlot(world);
     if (c == nullptr) {
-      WorldAccess::recordContact(world, i, kNoIndex, normal, penetration,
-                                 separating, source);
+      WorldAccess::recordContact(world, i, kNoIndex, wall.normal, penetration,
+                                 separating, wall.source);
       return;
     }
-    c->normal = normal;
+    c->normal = wall.normal;
     c->penetration = penetration;
     c->separatingVelocity = separating;
     c->a = i;
     c->b = kNoIndex;
-    c->source = source;
+    c->source = wall.source;
   }
 
   static bool isTarget(const Particle<S, Dim>& p) {
