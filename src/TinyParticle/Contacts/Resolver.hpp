@@ -277,12 +277,8 @@ struct Resolver {
   // short one's frame is small).
   static void resolveOne(W& world, C& contact, const Scaler<S>& byDt,
                          Change& change) {
-    S V::*axis;
-    bool positive;
-    if (contact.b == kNoIndex &&
-        detail::AxisNormal<S>::find(contact.normal, axis, positive)) {
-      resolveOnAxis(world, contact, byDt, change, axis, positive);
-    } else {
+    if (contact.b != kNoIndex ||
+        !resolveOnAxis(world, contact, byDt, change)) {
       resolveAny(world, contact, byDt, change);
     }
   }
@@ -399,13 +395,17 @@ struct Resolver {
   }
 
   // resolveOne() for a contact with scenery (b: none) whose normal is an
-  // axis, the sign `positive` (a ball on the floor or against a wall, the
-  // most common contact): the same steps with one particle and one
-  // component, the same results, a third of the cycles.
-  TINYPARTICLE_NOINLINE static void resolveOnAxis(W& world, C& contact,
+  // axis (a ball on the floor or against a wall, the most common contact):
+  // the same steps with one particle and one component, the same results,
+  // a third of the cycles. False, and nothing done, for another normal.
+  TINYPARTICLE_NOINLINE static bool resolveOnAxis(W& world, C& contact,
                                                   const Scaler<S>& byDt,
-                                                  Change& change, S V::*axis,
-                                                  bool positive) {
+                                                  Change& change) {
+    S V::*axis;
+    bool positive;
+    if (!detail::AxisNormal<S>::find(contact.normal, axis, positive)) {
+      return false;
+    }
     P& a = world.particleAt(contact.a);
     change.movedA = change.movedB = change.velocity = false;
     change.touchedB = false;
@@ -414,7 +414,7 @@ struct Resolver {
     if (!change.touchedA) {
       contact.penetration = S();
       contact.separatingVelocity = S();
-      return;
+      return true;
     }
     const S separating = contact.separatingVelocity;
     S deltaV = S();
@@ -458,6 +458,7 @@ struct Resolver {
     change.moveA.*axis = penetration;
     a.position.*axis += penetration;
     change.movedA = penetrating;
+    return true;
   }
 };
 
