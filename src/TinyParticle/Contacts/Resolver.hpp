@@ -428,8 +428,10 @@ struct Resolver {
         if (W::kForceCapacity != 0) {
           along = along + WorldAccess::uniformComponent(world, axis);
         }
-        if (!positive) along = -along;
-        if (deltaV > byDt(fabs(along))) {
+        // (fabs(along), written out: the call cost more than the test;
+        // the sign of the normal does not change it.)
+        if (deltaV > byDt(along < S() ? -along : along)) {
+          if (!positive) along = -along;
           target = -(separating * restitution);
           S built = byDt(along);
           if (built < S()) {
