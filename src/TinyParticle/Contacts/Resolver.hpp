@@ -51,8 +51,12 @@ struct Resolver {
   typedef typename W::ContactType C;
 
   // Resolves the world's contacts; returns the iterations used. byDt
-  // multiplies by the step's dt.
-  static uint8_t resolve(W& world, const Scaler<S>& byDt, uint8_t cap) {
+  // multiplies by the step's dt. (Out of line: inlined into World::step()
+  // with the integrator, the two crowded its registers; apart, the 16
+  // balls' step is 1 % faster and 230 B smaller.)
+  TINYPARTICLE_NOINLINE static uint8_t resolve(W& world,
+                                               const Scaler<S>& byDt,
+                                               uint8_t cap) {
     const uint8_t count = world.contactCount();
     if (count == 0) return 0;
     C* const contacts = &WorldAccess::contact(world, 0);

@@ -885,7 +885,9 @@ class World
     return false;
   }
 
-  void integrate(const Scaler<S>& byDt, bool andMove) {
+  // (Out of line, as the resolver is: see Resolver::resolve().)
+  TINYPARTICLE_NOINLINE void integrate(const Scaler<S>& byDt,
+                                       bool andMove) {
     TINYPARTICLE_PROFILE_BEGIN(kProfileIntegrate);
     // The uniform acceleration's share, the same for every particle.
     Vec uniformStep;
