@@ -251,7 +251,9 @@ struct CollisionConstraint {
         // most pairs that overlap along x end here.
         const S outer = reach + q.radius;
         if (!kSwept) {
-          if (fabs(p.position.y - q.position.y) > outer) continue;
+          // (|dy| > outer, without the call to fabs().)
+          const S dy = p.position.y - q.position.y;
+          if (dy > outer || -dy > outer) continue;
           if (W::kDimensions == 3 &&
               fabs(p.position[2] - q.position[2]) > outer) {
             continue;
