@@ -411,15 +411,16 @@ struct Resolver {
       return false;
     }
     P& a = world.particleAt(contact.a);
-    change.movedA = change.movedB = change.velocity = false;
-    change.touchedB = false;
     if (a.isAsleep()) world.wakeAll();
-    change.touchedA = !a.isStatic();
-    if (!change.touchedA) {
+    change.movedB = change.touchedB = false;
+    if (a.isStatic()) {
       contact.penetration = S();
       contact.separatingVelocity = S();
+      change.touchedA = change.movedA = change.velocity = false;
       return true;
     }
+    // (The change is written at the end, in one place.)
+    bool velocity = false;
     const S separating = contact.separatingVelocity;
     S deltaV = S();
     if (detail::isNegative(separating)) {
@@ -446,24 +447,22 @@ struct Resolver {
         }
       }
       contact.separatingVelocity = target;
-      change.velocity = true;
+      velocity = true;
+      if (!positive) deltaV = -deltaV;
+      a.velocity.*axis += deltaV;
     }
     S penetration = contact.penetration;
     const bool penetrating = detail::isPositive(penetration);
     if (penetrating) {
       contact.penetration = S();
-    } else {
-      penetration = S();
+      if (!positive) penetration = -penetration;
+      a.position.*axis += penetration;
+      change.moveA = V();  // (read only when movedA)
+      change.moveA.*axis = penetration;
     }
-    if (!positive) {
-      deltaV = -deltaV;
-      penetration = -penetration;
-    }
-    a.velocity.*axis += deltaV;
-    change.moveA = V();
-    change.moveA.*axis = penetration;
-    a.position.*axis += penetration;
+    change.touchedA = true;
     change.movedA = penetrating;
+    change.velocity = velocity;
     return true;
   }
 };
