@@ -88,6 +88,8 @@ struct Resolver {
     uint8_t linked[W::kContactCapacity > 0 ? W::kContactCapacity : 1];
     uint8_t linkedCount = 0;
     uint8_t iterations = 0;
+    // (One for all resolutions: each writes every field it reads.)
+    Change change;
     for (uint8_t j = 0; j < count; ++j) {
       C& contact = contacts[j];
       if (sharing.isShared(contact.a) || sharing.isShared(contact.b)) {
@@ -95,7 +97,6 @@ struct Resolver {
         continue;
       }
       if (iterations == cap || !isActive(contact, closing, deep)) continue;
-      Change change;
       resolveOne(world, contact, byDt, change);
       ++iterations;
     }
@@ -103,7 +104,6 @@ struct Resolver {
     uint8_t next = worstOf(contacts, linked, linkedCount, closing, deep);
     while (next != kNoIndex && iterations < cap) {
       C& contact = contacts[next];
-      Change change;
       resolveOne(world, contact, byDt, change);
       ++iterations;
       // (The contact just resolved is neither closing nor penetrating now,
