@@ -218,17 +218,24 @@ struct Resolver {
     }
     void add(uint8_t i) {
       if (i >= W::kParticleCapacity) return;  // kNoIndex: scenery
-      const uint8_t bit = bitOf(i);
-      if (once[i >> 3] & bit) {
-        many[i >> 3] |= bit;
+      const uint8_t bit = bitOf(i), byte = byteOf(i);
+      if (once[byte] & bit) {
+        many[byte] |= bit;
       } else {
-        once[i >> 3] |= bit;
+        once[byte] |= bit;
       }
     }
     bool isShared(uint8_t i) const {
-      return i < W::kParticleCapacity && (many[i >> 3] & bitOf(i)) != 0;
+      return i < W::kParticleCapacity && (many[byteOf(i)] & bitOf(i)) != 0;
     }
-    static uint8_t bitOf(uint8_t i) { return uint8_t(1u << (i & 7)); }
+    // (Written out: a shift by a variable count is a loop on AVR.)
+    static uint8_t bitOf(uint8_t i) {
+      uint8_t bit = (i & 1) != 0 ? 2 : 1;
+      if ((i & 2) != 0) bit = uint8_t(bit << 2);
+      if ((i & 4) != 0) bit = uint8_t(bit << 4);
+      return bit;
+    }
+    static uint8_t byteOf(uint8_t i) { return uint8_t(uint8_t(i) / 8u); }
   };
 
   struct Change {
