@@ -180,7 +180,13 @@ struct CollisionConstraint {
     // costs one compare per particle). The centre, not the start of the
     // extent: the loop then does no arithmetic, and the sweep allows for
     // the largest radius instead.
-    Entry entries[kSize];
+    // (Left unconstructed: each entry is written before it is read, and
+    // zeroing the list cost a store per byte and step.)
+    union List {
+      List() {}
+      Entry at[kSize];
+    } list;
+    Entry* const entries = list.at;
     Entry* end = entries;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
       const uint8_t i = order[k];
