@@ -186,9 +186,12 @@ struct Resolver {
   // scalar (or, in float, that halve forever between a ball and the floor
   // under it) would be resolved again and again up to the cap. What they
   // leave is picked up by the next step.
-  // Among the contacts of the list `linked` (indices, ascending).
-  static uint8_t worstOf(const C* contacts, const uint8_t* linked,
-                         uint8_t count, S closing, S deep) {
+  // Among the contacts of the list `linked` (indices, ascending). (Out of
+  // line: called from two places.)
+  TINYPARTICLE_NOINLINE static uint8_t worstOf(const C* contacts,
+                                               const uint8_t* linked,
+                                               uint8_t count, S closing,
+                                               S deep) {
     uint8_t worstIndex = kNoIndex;
     S worst = S::largest();
     for (uint8_t k = 0; k < count; ++k) {
