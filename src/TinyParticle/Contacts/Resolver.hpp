@@ -409,8 +409,8 @@ struct Resolver {
   }
 
   // resolveOne() for a contact with scenery (b: none) whose normal is an
-  // axis, with an awake movable particle and no bounce (a ball resting on
-  // the floor or sliding along a wall, the most common contact): the same
+  // axis, +e, with an awake movable particle and no bounce (a ball resting
+  // on the floor or sliding along a wall, the most common contact): the same
   // steps with one particle and one component, the same results, a third
   // of the cycles. False, and nothing done, for any other contact.
   TINYPARTICLE_NOINLINE static bool resolveOnAxis(W& world, C& contact,
@@ -418,7 +418,10 @@ struct Resolver {
                                                   Change& change) {
     S V::*axis;
     bool positive;
-    if (!detail::AxisNormal<S>::find(contact.normal, axis, positive)) {
+    // (Only normals along +e: floors, the most common; those along -e
+    // would double the code.)
+    if (!detail::AxisNormal<S>::find(contact.normal, axis, positive) ||
+        !positive) {
       return false;
     }
     P& a = world.particleAt(contact.a);
@@ -442,13 +445,12 @@ struct Resolver {
       // No bounce: the separating velocity becomes 0.
       contact.separatingVelocity = S();
       velocity = true;
-      a.velocity.*axis += positive ? deltaV : -deltaV;
+      a.velocity.*axis += deltaV;
     }
     S penetration = contact.penetration;
     const bool penetrating = detail::isPositive(penetration);
     if (penetrating) {
       contact.penetration = S();
-      if (!positive) penetration = -penetration;
       a.position.*axis += penetration;
       change.moveA = V();  // (read only when movedA)
       change.moveA.*axis = penetration;
