@@ -63,9 +63,10 @@ struct Resolver {
     // Below these a contact counts as resolved (see worstOf()).
     const S closing = -W::speedMargin();
     const S deep = W::contactMargin();
-    // One contact (a ball on the floor): once resolved, it is done. A world
-    // of one contact slot links nothing else.
-    if (count == 1 || W::kContactCapacity <= 1) {
+    // A world of one contact slot: once resolved, its contact is done, and
+    // nothing else is linked. (A single contact in a larger pool takes the
+    // one pass below: a shortcut for it cost more flash than it saved.)
+    if (W::kContactCapacity <= 1) {
       if (cap == 0 || !isActive(contacts[0], closing, deep)) return 0;
       Change change;
       resolveOne(world, contacts[0], byDt, change);
