@@ -1,12 +1,11 @@
-// The collisions' short way for a difference of centres along one axis
+// The collisions' short way for a difference of centres along x
 // (detail::AxisDifference, Contacts/Collisions.hpp) against its reference,
 // Vec::magnitudeAndNormalize(): the same unit vector and length, bit for
-// bit, on every input class it tells apart: each axis, both signs, 2D and
-// 3D, every power of two up to its limit 2^kTop and the values beside each,
-// in Q16.16, Q24.8 and Q8.8; and it declines a zero vector, a vector off
-// the axes, and magnitudes from 2^kTop on. On the PC it also checks every
-// magnitude below 2^kTop (in 2D along x; the reference treats the axes
-// alike).
+// bit, on every input class it tells apart: both signs, 2D and 3D, every
+// power of two up to its limit 2^kTop and the values beside each, in
+// Q16.16, Q24.8 and Q8.8; and it declines a zero vector, a vector along
+// another axis or off the axes, and magnitudes from 2^kTop on. On the PC
+// it also checks every magnitude below 2^kTop.
 #include <AUnit.h>
 #include <TinyParticle.h>
 
@@ -25,7 +24,9 @@ struct AxisCheck {
     reference = fast;
     T length = T(), referenceLength = reference.magnitudeAndNormalize();
     const bool taken = AxisDifference<T>::normalize(fast, length);
-    const bool inRange = m != 0 && m < (uint32_t(1) << AxisDifference<T>::kTop);
+    // It takes a vector along x below the limit, and declines the others.
+    const bool inRange = axis == 0 && m != 0 &&
+                         m < (uint32_t(1) << AxisDifference<T>::kTop);
     if (taken != inRange) return false;
     if (!taken) return true;
     if (length.raw() != referenceLength.raw()) return false;

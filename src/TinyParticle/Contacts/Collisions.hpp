@@ -101,9 +101,9 @@ struct AxisSpeed<Fixed<I, F> > {
   }
 };
 
-// A difference of centres along one axis only (balls side by side on the
-// floor: its contacts leave them at exactly the same height) normalises to
-// that axis, +1 or -1, and its length is that component's magnitude: what
+// A difference of centres along x only (balls side by side on the floor:
+// its contacts leave them at exactly the same height) normalises to x, +1
+// or -1, and its length is that component's magnitude: what
 // Vec::magnitudeAndNormalize() gives for it, exactly, while the magnitude
 // is below 2^kTop, where that normalisation scales nothing down (checked
 // for every such value by extras/test/CollisionAxisTest). Without the
@@ -126,14 +126,10 @@ struct AxisDifference<Fixed<I, F> > {
   static const uint8_t kTop = (sizeof(Raw) * 8 + F - 3) / 2;
 
   static bool normalize(Vec<T, 2>& v, T& length) {
-    if (v.y.raw() == 0) return unit(v.x, length);
-    return v.x.raw() == 0 && unit(v.y, length);
+    return v.y.raw() == 0 && unit(v.x, length);
   }
   static bool normalize(Vec<T, 3>& v, T& length) {
-    const bool x = v.x.raw() == 0, y = v.y.raw() == 0, z = v.z.raw() == 0;
-    if (y && z) return unit(v.x, length);
-    if (x && z) return unit(v.y, length);
-    return x && y && unit(v.z, length);
+    return v.y.raw() == 0 && v.z.raw() == 0 && unit(v.x, length);
   }
 
  private:
