@@ -113,16 +113,15 @@ inline void pushAlongNormal(Vec<S, 3>& velocity, Vec<S, 3>& position,
   position.z += move.z;
 }
 
-// Whether a contact normal is an axis, +e or -e (the normals of axis planes
-// and box walls: most contacts with scenery): then `axis` is that
-// component's member and `positive` its sign, and every product with the
-// normal is that component, or its negation (exactly what
-// NormalComponent's products give). Fixed point only: for another scalar
-// the answer is no, and its contacts take the general path.
+// Whether a contact normal is an axis, +e (the normals of floors and of
+// the low walls of boxes: most contacts with scenery): then `axis` is that
+// component's member, and every product with the normal is that component
+// (exactly what NormalComponent's products give). Fixed point only: for
+// another scalar the answer is no, and its contacts take the general path.
 template <typename S>
 struct AxisNormal {
   template <class V>
-  static bool find(const V&, S V::*&, bool&) {
+  static bool find(const V&, S V::*&) {
     return false;
   }
 };
@@ -130,27 +129,28 @@ struct AxisNormal {
 template <uint8_t I, uint8_t F>
 struct AxisNormal<Fixed<I, F> > {
   typedef Fixed<I, F> T;
-  typedef typename T::Raw Raw;
-  static bool find(const Vec<T, 2>& n, T Vec<T, 2>::*& axis, bool& positive) {
+  static bool find(const Vec<T, 2>& n, T Vec<T, 2>::*& axis) {
     typedef Vec<T, 2> V;
-    if (n.x.raw() == 0) return isUnit(n.y.raw(), &V::y, axis, positive);
-    return n.y.raw() == 0 && isUnit(n.x.raw(), &V::x, axis, positive);
+    if (n.x.raw() == 0 && n.y.raw() == T::kRawOne) {
+      axis = &V::y;
+      return true;
+    }
+    axis = &V::x;
+    return n.y.raw() == 0 && n.x.raw() == T::kRawOne;
   }
-  static bool find(const Vec<T, 3>& n, T Vec<T, 3>::*& axis, bool& positive) {
+  static bool find(const Vec<T, 3>& n, T Vec<T, 3>::*& axis) {
     typedef Vec<T, 3> V;
-    const Raw x = n.x.raw(), y = n.y.raw(), z = n.z.raw();
-    if (x == 0 && y == 0) return isUnit(z, &V::z, axis, positive);
-    if (x == 0 && z == 0) return isUnit(y, &V::y, axis, positive);
-    return y == 0 && z == 0 && isUnit(x, &V::x, axis, positive);
-  }
-
- private:
-  template <class M>
-  static bool isUnit(Raw raw, M member, M& axis, bool& positive) {
-    if (raw != T::kRawOne && raw != -T::kRawOne) return false;
-    axis = member;
-    positive = raw > 0;
-    return true;
+    const bool x = n.x.raw() == 0, y = n.y.raw() == 0, z = n.z.raw() == 0;
+    if (x && z && n.y.raw() == T::kRawOne) {
+      axis = &V::y;
+      return true;
+    }
+    if (x && y && n.z.raw() == T::kRawOne) {
+      axis = &V::z;
+      return true;
+    }
+    axis = &V::x;
+    return y && z && n.x.raw() == T::kRawOne;
   }
 };
 

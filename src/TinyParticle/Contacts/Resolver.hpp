@@ -417,14 +417,10 @@ struct Resolver {
   TINYPARTICLE_NOINLINE static bool resolveOnAxis(W& world, C& contact,
                                                   const Scaler<S>& byDt,
                                                   Change& change) {
-    S V::*axis;
-    bool positive;
     // (Only normals along +e: floors, the most common; those along -e
     // would double the code.)
-    if (!detail::AxisNormal<S>::find(contact.normal, axis, positive) ||
-        !positive) {
-      return false;
-    }
+    S V::*axis;
+    if (!detail::AxisNormal<S>::find(contact.normal, axis)) return false;
     P& a = world.particleAt(contact.a);
     // Asleep or immovable: the general way.
     if (a.isResting()) return false;
