@@ -210,36 +210,25 @@ struct Resolver {
     return c.separatingVelocity < closing || c.penetration > deep;
   }
 
-  // Two bits per particle slot: seen in a contact once, and more than once.
+  // For each particle slot, in how many contacts it is: 0, 1, or 2 for
+  // more (one byte each: a bit per slot cost shifts and masks on every
+  // look, more than the bytes save).
   struct Sharing {
     // (At least one byte: ISO C++ has no zero-size arrays.)
-    static const uint8_t kBytes = W::kParticleCapacity / 8 + 1;
-    uint8_t once[kBytes];
-    uint8_t many[kBytes];
+    static const uint8_t kSlots =
+        W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
+    uint8_t uses[kSlots];
 
     Sharing() {
-      for (uint8_t i = 0; i < kBytes; ++i) once[i] = many[i] = 0;
+      for (uint8_t i = 0; i < kSlots; ++i) uses[i] = 0;
     }
     void add(uint8_t i) {
       if (i >= W::kParticleCapacity) return;  // kNoIndex: scenery
-      const uint8_t bit = bitOf(i), byte = byteOf(i);
-      if (once[byte] & bit) {
-        many[byte] |= bit;
-      } else {
-        once[byte] |= bit;
-      }
+      if (uses[i] < 2) ++uses[i];
     }
     bool isShared(uint8_t i) const {
-      return i < W::kParticleCapacity && (many[byteOf(i)] & bitOf(i)) != 0;
+      return i < W::kParticleCapacity && uses[i] > 1;
     }
-    // (Written out: a shift by a variable count is a loop on AVR.)
-    static uint8_t bitOf(uint8_t i) {
-      uint8_t bit = (i & 1) != 0 ? 2 : 1;
-      if ((i & 2) != 0) bit = uint8_t(bit << 2);
-      if ((i & 4) != 0) bit = uint8_t(bit << 4);
-      return bit;
-    }
-    static uint8_t byteOf(uint8_t i) { return uint8_t(uint8_t(i) / 8u); }
   };
 
   struct Change {
