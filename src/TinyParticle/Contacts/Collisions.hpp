@@ -184,6 +184,7 @@ struct CollisionConstraint {
     } list;
     Entry* const entries = list.at;
     Entry* end = entries;
+    bool moved = false;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
       const uint8_t i = order[k];
       const P& p = world.particleAt(i);
@@ -193,14 +194,16 @@ struct CollisionConstraint {
       while (e != entries && x < e[-1].x) {
         *e = e[-1];
         --e;
+        moved = true;
       }
       e->x = x;
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
     // Keep the new order for the next step: the colliding particles
-    // sorted, then the others (any order will do for them).
-    if (count > 0) {
+    // sorted, then the others (any order will do for them). When all
+    // collide and none moved, it is the order already kept.
+    if (count > 0 && (moved || count < W::kParticleCapacity)) {
       uint8_t* o = order;
       for (const Entry* e = entries; e != end; ++e) *o++ = e->index;
       if (count < W::kParticleCapacity) {
