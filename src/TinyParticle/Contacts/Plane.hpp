@@ -141,28 +141,26 @@ struct PlaneConstraint {
     typedef Particle<S, Dim> P;
     const BoxParams<S, Dim>& box = InSlot::of<BoxParams<S, Dim> >(slot);
     const S margin = W::contactMargin();
-    V lowLimit, highLimit;  // within reach: x - r <= low + margin, ...
-    for (uint8_t k = 0; k < W::kDimensions; ++k) {
-      lowLimit[k] = box.low[k] + margin;
-      highLimit[k] = box.high[k] - margin;
-    }
     uint8_t near[ParticleSlots<W>::value];
     // walls: bit 2k for the low wall of axis k, 2k + 1 for its high wall.
     uint8_t walls[ParticleSlots<W>::value];
     uint8_t count = 0, touched = 0;
-    // The limits for the centre of a particle of radius r (x - r <= low +
-    // margin is x <= low + margin + r...), worked out again only when the
-    // radius changes: in most scenes every particle has the same one.
-    V low = lowLimit, high = highLimit;
+    // The limits for the centre of a particle of radius r: within reach
+    // while x - r <= low + margin, i.e. x <= (low + margin) + r, and so
+    // on; worked out again only when the radius changes (in most scenes
+    // every particle has the same one).
+    V low, high;
+    bool first = true;
     S radius = S();
     const P* p = &WorldAccess::particle(world, 0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (!isTarget(*p)) continue;
-      if (!(p->radius == radius)) {
+      if (first || !(p->radius == radius)) {
+        first = false;
         radius = p->radius;
         for (uint8_t k = 0; k < W::kDimensions; ++k) {
-          low[k] = lowLimit[k] + radius;
-          high[k] = highLimit[k] - radius;
+          low[k] = (box.low[k] + margin) + radius;
+          high[k] = (box.high[k] - margin) - radius;
         }
       }
       uint8_t bits = 0;
