@@ -250,8 +250,11 @@ struct Resolver {
   // After a resolution: the penetration and separating velocity of every
   // other contact of the list `linked` that shares a particle it changed
   // (kAllIndex matches no contact; the contacts off the list share none).
-  static void update(W& world, C* contacts, const uint8_t* linked,
-                     uint8_t count, uint8_t current, const Change& change) {
+  // (Out of line: it keeps the resolve loop's frame small.)
+  TINYPARTICLE_NOINLINE static void update(W& world, C* contacts,
+                                           const uint8_t* linked,
+                                           uint8_t count, uint8_t current,
+                                           const Change& change) {
     const uint8_t ta = change.touchedA ? contacts[current].a : kAllIndex;
     const uint8_t tb = change.touchedB ? contacts[current].b : kAllIndex;
     for (uint8_t k = 0; k < count; ++k) {
