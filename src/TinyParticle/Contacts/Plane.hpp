@@ -179,6 +179,19 @@ struct PlaneConstraint {
         ++count;
       }
     }
+    if (touched != 0) {
+      touchWalls(world, box, near, walls, count, touched, source);
+    }
+  }
+
+  // generateBox()'s contacts, wall by wall, for the `count` particles near
+  // a wall (near: their slots; walls: their bits). (Out of line: the scan's
+  // frame stays small.)
+  template <class W>
+  TINYPARTICLE_NOINLINE static void touchWalls(
+      W& world, const BoxParams<S, Dim>& box, const uint8_t* near,
+      const uint8_t* walls, uint8_t count, uint8_t touched, uint8_t source) {
+    typedef Vec<S, Dim> V;
     for (uint8_t side = 0; side < 2 * W::kDimensions; ++side) {
       const uint8_t bit = uint8_t(1u << side);
       if ((touched & bit) == 0) continue;  // no particle near this wall
