@@ -281,9 +281,10 @@ struct Resolver {
 
   // A contact with scenery along an axis takes the short way (each is out
   // of line: called from two places, and the general one is large; the
-  // short one's frame is small).
-  static void resolveOne(W& world, C& contact, const Scaler<S>& byDt,
-                         Change& change) {
+  // short one's frame is small). This choice itself is inlined.
+  TINYPARTICLE_ALWAYS_INLINE static void resolveOne(W& world, C& contact,
+                                                    const Scaler<S>& byDt,
+                                                    Change& change) {
     if (contact.b != kNoIndex ||
         !resolveOnAxis(world, contact, byDt, change)) {
       resolveAny(world, contact, byDt, change);
