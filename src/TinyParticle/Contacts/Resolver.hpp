@@ -186,9 +186,9 @@ struct Resolver {
   // counts as resolved: otherwise corrections that round to one unit of the
   // scalar (or, in float, that halve forever between a ball and the floor
   // under it) would be resolved again and again up to the cap. What they
-  // leave is picked up by the next step.
-  // Among the contacts of the list `linked` (indices, ascending). (Out of
-  // line: called from two places.)
+  // leave is picked up by the next step. It looks only at the contacts of
+  // the list `linked` (indices, ascending). (Out of line: called from two
+  // places.)
   TINYPARTICLE_NOINLINE static uint8_t worstOf(const C* contacts,
                                                const uint8_t* linked,
                                                uint8_t count, S closing,
