@@ -113,44 +113,27 @@ inline void pushAlongNormal(Vec<S, 3>& velocity, Vec<S, 3>& position,
   position.z += move.z;
 }
 
-// Whether a contact normal is an axis, +e (the normals of floors and of
-// the low walls of boxes: most contacts with scenery): then `axis` is that
-// component's member, and every product with the normal is that component
-// (exactly what NormalComponent's products give). Fixed point only: for
-// another scalar the answer is no, and its contacts take the general path.
+// Whether a contact normal is +y, straight up (the normal of a floor, the
+// most common contact with scenery: every product with it is the y
+// component, exactly what NormalComponent's products give). Fixed point
+// only: for another scalar the answer is no, and its contacts take the
+// general path.
 template <typename S>
-struct AxisNormal {
+struct FloorNormal {
   template <class V>
-  static bool find(const V&, S V::*&) {
+  static bool is(const V&) {
     return false;
   }
 };
 
 template <uint8_t I, uint8_t F>
-struct AxisNormal<Fixed<I, F> > {
+struct FloorNormal<Fixed<I, F> > {
   typedef Fixed<I, F> T;
-  static bool find(const Vec<T, 2>& n, T Vec<T, 2>::*& axis) {
-    typedef Vec<T, 2> V;
-    if (n.x.raw() == 0 && n.y.raw() == T::kRawOne) {
-      axis = &V::y;
-      return true;
-    }
-    axis = &V::x;
-    return n.y.raw() == 0 && n.x.raw() == T::kRawOne;
+  static bool is(const Vec<T, 2>& n) {
+    return n.x.raw() == 0 && n.y.raw() == T::kRawOne;
   }
-  static bool find(const Vec<T, 3>& n, T Vec<T, 3>::*& axis) {
-    typedef Vec<T, 3> V;
-    const bool x = n.x.raw() == 0, y = n.y.raw() == 0, z = n.z.raw() == 0;
-    if (x && z && n.y.raw() == T::kRawOne) {
-      axis = &V::y;
-      return true;
-    }
-    if (x && y && n.z.raw() == T::kRawOne) {
-      axis = &V::z;
-      return true;
-    }
-    axis = &V::x;
-    return y && z && n.x.raw() == T::kRawOne;
+  static bool is(const Vec<T, 3>& n) {
+    return n.x.raw() == 0 && n.z.raw() == 0 && n.y.raw() == T::kRawOne;
   }
 };
 

@@ -95,6 +95,7 @@ struct PlaneConstraint {
                            uint8_t source) {
     typedef Vec<S, Dim> V;
     typedef Particle<S, Dim> P;
+    Resolver<W>::useShortWay();  // for a floor's contacts
     const PlaneConstraint& plane = InSlot::of<PlaneConstraint>(slot);
     const V& normal = plane.normal;
     const S offset = plane.offset;
@@ -139,6 +140,7 @@ struct PlaneConstraint {
                           uint8_t source) {
     typedef Vec<S, Dim> V;
     typedef Particle<S, Dim> P;
+    Resolver<W>::useShortWay();  // for its floor's contacts
     const BoxParams<S, Dim>& box = InSlot::of<BoxParams<S, Dim> >(slot);
     const S margin = W::contactMargin();
     uint8_t near[ParticleSlots<W>::value];

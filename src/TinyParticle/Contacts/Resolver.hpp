@@ -69,7 +69,7 @@ struct Resolver {
     if (W::kContactCapacity <= 1) {
       if (cap == 0 || !isActive(contacts[0], closing, deep)) return 0;
       Change change;
-      resolveOne(world, contacts[0], byDt, change);
+      resolveAny(world, contacts[0], byDt, change);
       return 1;
     }
     // The particles in more than one contact: a resolution changes other
@@ -145,6 +145,14 @@ struct Resolver {
       return kNoIndex;
     }
     return slot;
+  }
+
+  // The short way for contacts with a floor (resolveOnFloor()) is linked
+  // only into sketches that can have one: the generators of axis planes
+  // and boxes call this in each step, before the resolver runs. (Not for a
+  // world of one contact slot: its one contact takes the general way.)
+  static void useShortWay() {
+    if (W::kContactCapacity > 1) shortWay() = &resolveOnFloor;
   }
 
   // The pool's next free slot, taken; null when the pool is full (then
@@ -279,16 +287,26 @@ struct Resolver {
     }
   }
 
-  // A contact with scenery along an axis takes the short way (each is out
-  // of line: called from two places, and the general one is large; the
-  // short one's frame is small). This choice itself is inlined.
+  // A contact with a floor takes the short way when the sketch has one
+  // (each is out of line: called from two places, and the general one is
+  // large; the short one's frame is small). This choice itself is inlined.
   TINYPARTICLE_ALWAYS_INLINE static void resolveOne(W& world, C& contact,
                                                     const Scaler<S>& byDt,
                                                     Change& change) {
-    if (contact.b != kNoIndex ||
-        !resolveOnAxis(world, contact, byDt, change)) {
+    const ShortWay way = shortWay();
+    if (contact.b != kNoIndex || way == nullptr ||
+        !way(world, contact, byDt, change)) {
       resolveAny(world, contact, byDt, change);
     }
+  }
+
+  // resolveOnFloor() once a generator has asked for it (useShortWay()),
+  // null before. Worlds of one type share it: one without floors then
+  // only looks at each contact's normal and finds none.
+  typedef bool (*ShortWay)(W&, C&, const Scaler<S>&, Change&);
+  static ShortWay& shortWay() {
+    static ShortWay way = nullptr;
+    return way;
   }
 
   TINYPARTICLE_NOINLINE static void resolveAny(W& world, C& contact,
@@ -402,18 +420,15 @@ struct Resolver {
     change.touchedB = movesB;
   }
 
-  // resolveOne() for a contact with scenery (b: none) whose normal is an
-  // axis, +e, with an awake movable particle and no bounce (a ball resting
-  // on the floor or sliding along a wall, the most common contact): the same
-  // steps with one particle and one component, the same results, a third
-  // of the cycles. False, and nothing done, for any other contact.
-  TINYPARTICLE_NOINLINE static bool resolveOnAxis(W& world, C& contact,
-                                                  const Scaler<S>& byDt,
-                                                  Change& change) {
-    // (Only normals along +e: floors, the most common; those along -e
-    // would double the code.)
-    S V::*axis;
-    if (!detail::AxisNormal<S>::find(contact.normal, axis)) return false;
+  // resolveOne() for a contact with scenery (b: none) whose normal is +y,
+  // with an awake movable particle and no bounce (a ball resting on the
+  // floor, the most common contact): the same steps with one particle and
+  // one component, the same results, a third of the cycles. False, and
+  // nothing done, for any other contact.
+  TINYPARTICLE_NOINLINE static bool resolveOnFloor(W& world, C& contact,
+                                                   const Scaler<S>& byDt,
+                                                   Change& change) {
+    if (!detail::FloorNormal<S>::is(contact.normal)) return false;
     P& a = world.particleAt(contact.a);
     // Asleep or immovable: the general way.
     if (a.isResting()) return false;
@@ -423,27 +438,27 @@ struct Resolver {
       const S deltaV = -separating;
       if (!detail::isZero(WorldAccess::restitutionOf(world, contact.source))) {
         // accelerationAlong(a, normal), resolveAny()'s alongA.
-        S along = a.acceleration.*axis;
+        S along = a.acceleration.y;
         if (W::kForceCapacity != 0) {
-          along = along + WorldAccess::uniformComponent(world, axis);
+          along = along + WorldAccess::uniformComponent(world, &V::y);
         }
         // A bounce (closing faster than this step's acceleration explains):
         // the general way. (fabs(along), written out: the call cost more
-        // than the test; the sign of the normal does not change it.)
+        // than the test.)
         if (deltaV > byDt(along < S() ? -along : along)) return false;
       }
       // No bounce: the separating velocity becomes 0.
       contact.separatingVelocity = S();
       velocity = true;
-      a.velocity.*axis += deltaV;
+      a.velocity.y += deltaV;
     }
     S penetration = contact.penetration;
     const bool penetrating = detail::isPositive(penetration);
     if (penetrating) {
       contact.penetration = S();
-      a.position.*axis += penetration;
+      a.position.y += penetration;
       change.moveA = V();  // (read only when movedA)
-      change.moveA.*axis = penetration;
+      change.moveA.y = penetration;
     }
     change.touchedA = true;
     change.touchedB = change.movedB = false;
