@@ -120,6 +120,7 @@ inline void pushAlongNormal(Vec<S, 3>& velocity, Vec<S, 3>& position,
 // general path.
 template <typename S>
 struct FloorNormal {
+  static const bool kUsed = false;  // no short way to link
   template <class V>
   static bool is(const V&) {
     return false;
@@ -128,6 +129,7 @@ struct FloorNormal {
 
 template <uint8_t I, uint8_t F>
 struct FloorNormal<Fixed<I, F> > {
+  static const bool kUsed = true;
   typedef Fixed<I, F> T;
   static bool is(const Vec<T, 2>& n) {
     return n.x.raw() == 0 && n.y.raw() == T::kRawOne;

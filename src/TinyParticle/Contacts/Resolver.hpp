@@ -150,9 +150,12 @@ struct Resolver {
   // The short way for contacts with a floor (resolveOnFloor()) is linked
   // only into sketches that can have one: the generators of axis planes
   // and boxes call this in each step, before the resolver runs. (Not for a
-  // world of one contact slot: its one contact takes the general way.)
+  // world of one contact slot, whose one contact takes the general way, nor
+  // for a float scalar, which has no short way.)
   static void useShortWay() {
-    if (W::kContactCapacity > 1) shortWay() = &resolveOnFloor;
+    if (W::kContactCapacity > 1 && detail::FloorNormal<S>::kUsed) {
+      shortWay() = &resolveOnFloor;
+    }
   }
 
   // The pool's next free slot, taken; null when the pool is full (then
