@@ -74,10 +74,15 @@ struct Resolver {
     }
     // The particles in more than one contact: a resolution changes other
     // contacts only through them (a ball alone on the floor touches none).
-    Sharing sharing;
+    // For each particle slot, in how many contacts it is: 0, 1, or 2 for
+    // more (a byte each: a bit per slot cost shifts and masks on every
+    // look, more than the bytes save); b = kNoIndex (scenery) counts none.
+    uint8_t uses[kSlots];
+    for (uint8_t i = 0; i < kSlots; ++i) uses[i] = 0;
     for (uint8_t j = 0; j < count; ++j) {
-      sharing.add(contacts[j].a);
-      sharing.add(contacts[j].b);
+      const uint8_t a = contacts[j].a, b = contacts[j].b;
+      if (a < kSlots && uses[a] < 2) ++uses[a];
+      if (b < kSlots && uses[b] < 2) ++uses[b];
     }
     // A contact whose particles are in no other contact changes no other
     // one, and no other one changes it: it is resolved once, in one pass,
@@ -93,7 +98,7 @@ struct Resolver {
     Change change;
     for (uint8_t j = 0; j < count; ++j) {
       C& contact = contacts[j];
-      if (sharing.isShared(contact.a) || sharing.isShared(contact.b)) {
+      if (isShared(uses, contact.a) || isShared(uses, contact.b)) {
         linked[linkedCount++] = j;
         continue;
       }
@@ -109,8 +114,8 @@ struct Resolver {
       ++iterations;
       // (The contact just resolved is neither closing nor penetrating now,
       // so it is not picked again.)
-      if ((change.touchedA && sharing.isShared(contact.a)) ||
-          (change.touchedB && sharing.isShared(contact.b))) {
+      if ((change.touchedA && isShared(uses, contact.a)) ||
+          (change.touchedB && isShared(uses, contact.b))) {
         update(world, contacts, linked, linkedCount, next, change);
       }
       next = worstOf(contacts, linked, linkedCount, closing, deep);
@@ -221,26 +226,14 @@ struct Resolver {
     return c.separatingVelocity < closing || c.penetration > deep;
   }
 
-  // For each particle slot, in how many contacts it is: 0, 1, or 2 for
-  // more (one byte each: a bit per slot cost shifts and masks on every
-  // look, more than the bytes save).
-  struct Sharing {
-    // (At least one byte: ISO C++ has no zero-size arrays.)
-    static const uint8_t kSlots =
-        W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
-    uint8_t uses[kSlots];
-
-    Sharing() {
-      for (uint8_t i = 0; i < kSlots; ++i) uses[i] = 0;
-    }
-    void add(uint8_t i) {
-      if (i >= W::kParticleCapacity) return;  // kNoIndex: scenery
-      if (uses[i] < 2) ++uses[i];
-    }
-    bool isShared(uint8_t i) const {
-      return i < W::kParticleCapacity && uses[i] > 1;
-    }
-  };
+  // The particle slots' count for the sharing counts (at least one: ISO
+  // C++ has no zero-size arrays); whether particle i is in more than one
+  // contact.
+  static const uint8_t kSlots =
+      W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
+  static bool isShared(const uint8_t* uses, uint8_t i) {
+    return i < kSlots && uses[i] > 1;
+  }
 
   struct Change {
     V moveA, moveB;     // how far each particle moved (when moved*)
