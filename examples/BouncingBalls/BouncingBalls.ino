@@ -55,8 +55,13 @@ void loop() {
     if (renderer.drawLine(world, Serial)) {
       drawing = false;
       Serial.print(F("t="));
-      // steps / 128 s, printed in fixed point (no float routine linked).
-      print(Serial, Q16_16::fromRaw(int32_t(timing.steps() << 9)), 2);
+      // steps / 128 s, to 1/100 s, in integers (no float routine linked).
+      const uint32_t centiseconds = (timing.steps() * 100 + 64) / 128;
+      Serial.print(centiseconds / 100);
+      Serial.print('.');
+      const uint8_t hundredths = uint8_t(centiseconds % 100);
+      if (hundredths < 10) Serial.print('0');
+      Serial.print(hundredths);
       Serial.print(F(" s  contacts "));
       Serial.print(world.stats().contacts);
       Serial.print(F("  iterations "));

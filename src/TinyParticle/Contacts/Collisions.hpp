@@ -101,6 +101,48 @@ struct AxisSpeed<Fixed<I, F> > {
   }
 };
 
+// A difference of centres along x only (balls side by side on the floor:
+// its contacts leave them at exactly the same height) normalises to x, +1
+// or -1, and its length is that component's magnitude: what
+// Vec::magnitudeAndNormalize() gives for it, exactly, while the magnitude
+// is below 2^kTop, where that normalisation scales nothing down (checked
+// for every such value by extras/test/CollisionAxisTest). Without the
+// square root and the two divisions. Fixed point only; false (nothing
+// done) for any other vector or scalar.
+template <typename S>
+struct AxisDifference {
+  template <class V>
+  static bool normalize(V&, S&) {
+    return false;
+  }
+};
+
+template <uint8_t I, uint8_t F>
+struct AxisDifference<Fixed<I, F> > {
+  typedef Fixed<I, F> T;
+  typedef typename T::Raw Raw;
+  typedef typename T::URaw URaw;
+  // Vec's normalisation keeps the largest magnitude below 2^kTop.
+  static const uint8_t kTop = (sizeof(Raw) * 8 + F - 3) / 2;
+
+  static bool normalize(Vec<T, 2>& v, T& length) {
+    return v.y.raw() == 0 && unit(v.x, length);
+  }
+  static bool normalize(Vec<T, 3>& v, T& length) {
+    return v.y.raw() == 0 && v.z.raw() == 0 && unit(v.x, length);
+  }
+
+ private:
+  static bool unit(T& c, T& length) {
+    const Raw raw = c.raw();
+    const URaw m = T::magnitude(raw);
+    if (m == 0 || m >= (URaw(1) << kTop)) return false;
+    length = T::fromRaw(Raw(m));
+    c = T::fromRaw(raw < 0 ? Raw(-T::kRawOne) : Raw(T::kRawOne));
+    return true;
+  }
+};
+
 }  // namespace detail
 
 template <class W>
@@ -134,8 +176,15 @@ struct CollisionConstraint {
     // costs one compare per particle). The centre, not the start of the
     // extent: the loop then does no arithmetic, and the sweep allows for
     // the largest radius instead.
-    Entry entries[kSize];
+    // (Left unconstructed: each entry is written before it is read, and
+    // zeroing the list cost a store per byte and step.)
+    union List {
+      List() {}
+      Entry at[kSize];
+    } list;
+    Entry* const entries = list.at;
     Entry* end = entries;
+    bool moved = false;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
       const uint8_t i = order[k];
       const P& p = world.particleAt(i);
@@ -145,14 +194,16 @@ struct CollisionConstraint {
       while (e != entries && x < e[-1].x) {
         *e = e[-1];
         --e;
+        moved = true;
       }
       e->x = x;
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
     // Keep the new order for the next step: the colliding particles
-    // sorted, then the others (any order will do for them).
-    if (count > 0) {
+    // sorted, then the others (any order will do for them). When all
+    // collide and none moved, it is the order already kept.
+    if (count > 0 && (moved || count < W::kParticleCapacity)) {
       uint8_t* o = order;
       for (const Entry* e = entries; e != end; ++e) *o++ = e->index;
       if (count < W::kParticleCapacity) {
@@ -225,15 +276,23 @@ struct CollisionConstraint {
                                           uint8_t count, S spread,
                                           uint8_t source) {
     const S margin = W::contactMargin();
+    // The sums of a radius and the margin (reach) and of a radius and the
+    // spread (bound), worked out again only when the radius changes: in
+    // most scenes every particle has the same one.
+    S radius = S(), reach = margin, bound = spread;
     for (uint8_t m = 0; m + 1 < count; ++m) {
       const uint8_t i = entries[m].index;
       const P& p = world.particleAt(i);
-      const S reach = p.radius + margin;
+      if (!(p.radius == radius)) {
+        radius = p.radius;
+        reach = radius + margin;
+        bound = radius + spread;
+      }
       // Every later entry's centre is at or after this one's; those whose
       // centre is farther than this radius plus the largest one (and the
       // margin, and with swept contacts both moves along x), and all after
       // them, are apart along x.
-      S high = entries[m].x + (p.radius + spread);
+      S high = entries[m].x + bound;
       if (kSwept) high += moveOf(world, p, p.velocity.x);
       for (uint8_t n = m + 1; n < count && !(high < entries[n].x); ++n) {
         const uint8_t j = entries[n].index;
@@ -243,7 +302,9 @@ struct CollisionConstraint {
         // most pairs that overlap along x end here.
         const S outer = reach + q.radius;
         if (!kSwept) {
-          if (fabs(p.position.y - q.position.y) > outer) continue;
+          // (|dy| > outer, without the call to fabs().)
+          const S dy = p.position.y - q.position.y;
+          if (dy > outer || -dy > outer) continue;
           if (W::kDimensions == 3 &&
               fabs(p.position[2] - q.position[2]) > outer) {
             continue;
@@ -296,7 +357,10 @@ struct CollisionConstraint {
     // Vec's normalisation scales the difference up first (Math/Vec.hpp), so
     // the normal is unit length to a few units of the scalar.
     V normal = delta;
-    const S distance = normal.magnitudeAndNormalize();
+    S distance;
+    if (!detail::AxisDifference<S>::normalize(normal, distance)) {
+      distance = normal.magnitudeAndNormalize();
+    }
     S penetration = reach - distance;
     if (distance == S()) {
       normal = V();

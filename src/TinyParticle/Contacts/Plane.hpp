@@ -19,6 +19,7 @@
 #include "../Core/Particle.hpp"
 #include "../Math/ScalarTraits.hpp"
 #include "../Core/Access.hpp"
+#include "Resolver.hpp"
 
 namespace tinyparticle {
 
@@ -94,6 +95,7 @@ struct PlaneConstraint {
                            uint8_t source) {
     typedef Vec<S, Dim> V;
     typedef Particle<S, Dim> P;
+    Resolver<W>::useShortWay();  // for a floor's contacts
     const PlaneConstraint& plane = InSlot::of<PlaneConstraint>(slot);
     const V& normal = plane.normal;
     const S offset = plane.offset;
@@ -123,9 +125,8 @@ struct PlaneConstraint {
         near[count++] = i;
       }
     }
-    for (uint8_t k = 0; k < count; ++k) {
-      touch(world, normal, along, positive, offset, near[k], source);
-    }
+    const Wall wall = {normal, along, offset, source, positive};
+    for (uint8_t k = 0; k < count; ++k) touch(world, wall, near[k]);
   }
 
   // The 2 Dim walls of a box in one pass over the particles: each one's
@@ -139,29 +140,39 @@ struct PlaneConstraint {
                           uint8_t source) {
     typedef Vec<S, Dim> V;
     typedef Particle<S, Dim> P;
+    Resolver<W>::useShortWay();  // for its floor's contacts
     const BoxParams<S, Dim>& box = InSlot::of<BoxParams<S, Dim> >(slot);
     const S margin = W::contactMargin();
-    V lowLimit, highLimit;  // within reach: x - r <= low + margin, ...
-    for (uint8_t k = 0; k < W::kDimensions; ++k) {
-      lowLimit[k] = box.low[k] + margin;
-      highLimit[k] = box.high[k] - margin;
-    }
     uint8_t near[ParticleSlots<W>::value];
     // walls: bit 2k for the low wall of axis k, 2k + 1 for its high wall.
     uint8_t walls[ParticleSlots<W>::value];
     uint8_t count = 0, touched = 0;
+    // The limits for the centre of a particle of radius r: within reach
+    // while x - r <= low + margin, i.e. x <= (low + margin) + r, and so
+    // on; worked out again only when the radius changes (in most scenes
+    // every particle has the same one).
+    V low, high;
+    bool first = true;
+    S radius = S();
     const P* p = &WorldAccess::particle(world, 0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (!isTarget(*p)) continue;
-      const S r = p->radius;
+      if (first || !(p->radius == radius)) {
+        first = false;
+        radius = p->radius;
+        for (uint8_t k = 0; k < W::kDimensions; ++k) {
+          low[k] = (box.low[k] + margin) + radius;
+          high[k] = (box.high[k] - margin) - radius;
+        }
+      }
       uint8_t bits = 0;
-      if (!(p->position.x - r > lowLimit.x)) bits |= 1;
-      if (!(p->position.x + r < highLimit.x)) bits |= 2;
-      if (!(p->position.y - r > lowLimit.y)) bits |= 4;
-      if (!(p->position.y + r < highLimit.y)) bits |= 8;
+      if (!(p->position.x > low.x)) bits |= 1;
+      if (!(p->position.x < high.x)) bits |= 2;
+      if (!(p->position.y > low.y)) bits |= 4;
+      if (!(p->position.y < high.y)) bits |= 8;
       if (W::kDimensions == 3) {
-        if (!(p->position[2] - r > lowLimit[2])) bits |= 16;
-        if (!(p->position[2] + r < highLimit[2])) bits |= 32;
+        if (!(p->position[2] > low[2])) bits |= 16;
+        if (!(p->position[2] < high[2])) bits |= 32;
       }
       if (bits != 0) {
         near[count] = i;
@@ -170,19 +181,35 @@ struct PlaneConstraint {
         ++count;
       }
     }
-    for (uint8_t wall = 0; wall < 2 * W::kDimensions; ++wall) {
-      const uint8_t bit = uint8_t(1u << wall);
+    if (touched != 0) {
+      touchWalls(world, box, near, walls, count, touched, source);
+    }
+  }
+
+  // generateBox()'s contacts, wall by wall, for the `count` particles near
+  // a wall (near: their slots; walls: their bits). (Out of line: the scan's
+  // frame stays small.)
+  template <class W>
+  TINYPARTICLE_NOINLINE static void touchWalls(
+      W& world, const BoxParams<S, Dim>& box, const uint8_t* near,
+      const uint8_t* walls, uint8_t count, uint8_t touched, uint8_t source) {
+    typedef Vec<S, Dim> V;
+    for (uint8_t side = 0; side < 2 * W::kDimensions; ++side) {
+      const uint8_t bit = uint8_t(1u << side);
       if ((touched & bit) == 0) continue;  // no particle near this wall
-      const uint8_t axis = uint8_t(wall >> 1);
-      const bool positive = (wall & 1) == 0;
-      S V::*const along = detail::AxisMember<V>::of(axis);
-      V normal;
-      normal.*along = positive ? S(1) : S(-1);
+      const uint8_t axis = uint8_t(side >> 1);
+      Wall wall;
+      wall.positive = (side & 1) == 0;
+      wall.along = detail::AxisMember<V>::of(axis);
+      wall.normal = V();
+      wall.normal.*wall.along = wall.positive ? S(1) : S(-1);
       // As an axis plane's: offset = low, or minus high.
-      const S offset = positive ? box.low.*along : -(box.high.*along);
+      wall.offset = wall.positive ? box.low.*wall.along
+                                  : -(box.high.*wall.along);
+      wall.source = source;
       for (uint8_t k = 0; k < count; ++k) {
         if ((walls[k] & bit) == 0) continue;
-        touch(world, normal, along, positive, offset, near[k], source);
+        touch(world, wall, near[k]);
       }
     }
   }
@@ -196,18 +223,30 @@ struct PlaneConstraint {
         W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
   };
 
-  // Particle i within the margin of the axis plane of `offset` (see
-  // generateAxis(): the bound, or minus it for a negative normal). Its
+  // An axis plane, or one wall of a box, as touch() takes it (one
+  // argument, not five: the call costs less): its normal (+e or -e), that
+  // axis's member, the offset, the constraint slot, and the normal's sign.
+  struct Wall {
+    Vec<S, Dim> normal;
+    S Vec<S, Dim>::*along;
+    S offset;
+    uint8_t source;
+    bool positive;
+  };
+
+  // Particle i within the margin of the wall (its offset: see
+  // generateAxis(), the bound, or minus it for a negative normal). Its
   // penetration, separating velocity and acceleration along the normal are
   // that coordinate of its position (less or plus its radius), velocity and
   // acceleration, with the normal's sign (exactly what the dot products
   // give); the sign does not matter for the acceleration, only whether it
   // is zero (WorldAccess::isIdle<W>()).
   template <class W>
-  TINYPARTICLE_NOINLINE static void touch(W& world, const Vec<S, Dim>& normal,
-                                          S Vec<S, Dim>::*along,
-                                          bool positive, S offset, uint8_t i,
-                                          uint8_t source) {
+  TINYPARTICLE_NOINLINE static void touch(W& world, const Wall& wall,
+                                          uint8_t i) {
+    S Vec<S, Dim>::*const along = wall.along;
+    const bool positive = wall.positive;
+    const S offset = wall.offset;
     const Particle<S, Dim>& p = WorldAccess::particle(world, i);
     const S side = positive ? p.position.*along - p.radius
                             : p.position.*along + p.radius;
@@ -219,8 +258,20 @@ struct PlaneConstraint {
     if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {
       return;
     }
-    WorldAccess::recordContact(world, i, kNoIndex, normal, penetration,
-                               separating, source);
+    // The particle is awake (isTarget()), so the contact wakes nobody:
+    // while the pool has room it is written here, without the call.
+    typename W::ContactType* c = Resolver<W>::takeFreeSlot(world);
+    if (c == nullptr) {
+      WorldAccess::recordContact(world, i, kNoIndex, wall.normal, penetration,
+                                 separating, wall.source);
+      return;
+    }
+    c->normal = wall.normal;
+    c->penetration = penetration;
+    c->separatingVelocity = separating;
+    c->a = i;
+    c->b = kNoIndex;
+    c->source = wall.source;
   }
 
   static bool isTarget(const Particle<S, Dim>& p) {

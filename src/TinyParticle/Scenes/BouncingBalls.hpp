@@ -47,11 +47,11 @@ uint8_t buildBallBox(W& world, uint8_t count, uint16_t seed,
     position.x = spacing * S(int(i % side + 1));
     position.y = spacing * S(int(i / side + 1));
     if (W::kDimensions == 3) position[2] = S(0.5);
-    ParticleId id = world.addParticle(position, S(0.1), S(0.03));
-    typename W::ParticleType* p = world.particle(id);
-    if (p == nullptr) break;
+    const ParticleId id = world.addParticle(position, S(0.1), S(0.03));
+    if (!id.isValid()) break;
+    typename W::Vec& velocity = world.particleAt(id.index).velocity;
     for (uint8_t k = 0; k < W::kDimensions; ++k) {
-      p->velocity[k] = unit * S(int(random.symmetric(128)));
+      velocity[k] = unit * S(int(random.symmetric(128)));
     }
     ++added;
   }

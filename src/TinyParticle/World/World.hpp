@@ -558,7 +558,11 @@ class World
     // With rods, the positions move after the rods' velocity solve, so that
     // each moves once, rounded once (the solver calls movePositions()).
     const RodSolve solveRods = RodStore::rodSolver();
-    integrate(byDt, solveRods == nullptr);
+    if (kConstraints != 0 && kContacts != 0) {
+      integrateApart(byDt, solveRods == nullptr);
+    } else {
+      integrate(byDt, solveRods == nullptr);
+    }
     if (kConstraints != 0) {
       if (solveRods != nullptr) {
         TINYPARTICLE_PROFILE_BEGIN(kProfileRods);
@@ -878,6 +882,14 @@ class World
     mError |= WorldError::kStaleHandle;
     TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
     return false;
+  }
+
+  // integrate(), out of line in a world with contacts, as the resolver is
+  // (see Resolver::resolve()); elsewhere (no resolver) the call would only
+  // cost.
+  TINYPARTICLE_NOINLINE void integrateApart(const Scaler<S>& byDt,
+                                            bool andMove) {
+    integrate(byDt, andMove);
   }
 
   void integrate(const Scaler<S>& byDt, bool andMove) {
