@@ -55,7 +55,7 @@ enum AsmRoutine : uint8_t {
   kAsmDivQ8,    // Q8.8 divide, through avrDivideQ16
   kAsmSqrtQ8,   // Q8.8 square root (avrSquareRoot, e0 = 4)
   kAsmAtan2,    // atan2 core (avrAtan2Units) on 32-bit raw values
-  kAsmAddQ32,   // 32-bit saturating add (addOverflows)
+  kAsmAddQ32,   // 32-bit saturating add (addSaturating)
   kAsmSubQ32,   // 32-bit saturating subtract
   kAsmAddQ16,   // 16-bit saturating add (Q8.8)
   kAsmSubQ16,   // 16-bit saturating subtract
@@ -549,7 +549,7 @@ TINYPARTICLE_NOINLINE void classifySin(int32_t a, int32_t b, C& c) {
   }
 }
 
-// ---- Add and subtract (addOverflows, subtractOverflows) ----------------
+// ---- Add and subtract (addSaturating, subtractSaturating) --------------
 // Families: 0 signs; 1 outcome: ordinary / within 3 of a limit /
 // overflow upwards / overflow downwards.
 template <typename C>
