@@ -76,6 +76,13 @@ struct Checks {
   }
 };
 
+// The constructor is constexpr: a global renderer needs no start-up code
+// (this does not compile otherwise), in fixed and in floating point.
+constexpr AsciiRenderer<World<Q16_16, 2, 1>, 4, 2> kConstantFixed(
+    Q16_16(0), Q16_16(0), Q16_16(0.1), Q16_16(0.2));
+constexpr AsciiRenderer<World<Float, 2, 1>, 4, 2> kConstantFloat(
+    Float(0), Float(0), Float(0.1), Float(0.2));
+
 // A point particle at (1.05, 1.1): column 10, row 4 from the top
 // (y = 1.1 is 5.5 cells up, in the 6th row from the bottom).
 test(PointParticle_Q16_16) {

@@ -20,9 +20,12 @@
 
 #include <stdint.h>
 
+#include "../Configuration.hpp"
 #include "../Debug/Profile.hpp"
 #include "../Core/Access.hpp"
 #include "../Core/Generator.hpp"
+#include "../Math/Fixed.hpp"
+#include "../Math/Float.hpp"
 
 namespace tinyparticle {
 
@@ -35,11 +38,14 @@ class AsciiRenderer {
   typedef typename W::Scalar S;
   typedef typename W::Vec V;
 
-  AsciiRenderer(S left, S bottom, S cellWidth, S cellHeight)
+  // constexpr: a global renderer with constant bounds costs no start-up
+  // code (its scales are folded at compile time). A cell size of 0 gives
+  // the largest scale (as S(16) / 0 does, without its error flag).
+  constexpr AsciiRenderer(S left, S bottom, S cellWidth, S cellHeight)
       : mLeft(left),
         mBottom(bottom),
-        mScaleX(S(kSub) / cellWidth),
-        mScaleY(S(kSub) / cellHeight),
+        mScaleX(scaleFor(cellWidth)),
+        mScaleY(scaleFor(cellHeight)),
         mLine(0),
         mBorder(true),
         mHome(false) {}
@@ -123,11 +129,49 @@ class AsciiRenderer {
   static Units clampUnits(int32_t v) {
     return Units(v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v));
   }
-  Units toUnitsX(S x) const {
-    return clampUnits(((x - mLeft) * mScaleX).toInt());
+  // One out-of-line routine for both axes: x and y share its code.
+  static TINYPARTICLE_NOINLINE Units toUnits(S v, S origin, S scale) {
+    return clampUnits(((v - origin) * scale).toInt());
   }
-  Units toUnitsY(S y) const {
-    return clampUnits(((y - mBottom) * mScaleY).toInt());
+  Units toUnitsX(S x) const { return toUnits(x, mLeft, mScaleX); }
+  Units toUnitsY(S y) const { return toUnits(y, mBottom, mScaleY); }
+
+  // kSub / cell (sub-cell units per metre), rounded as the scalar's own
+  // division rounds it, in a constant expression.
+  template <uint8_t I, uint8_t F>
+  static constexpr Fixed<I, F> scaleFor(Fixed<I, F> cell) {
+    typedef Fixed<I, F> T;
+    return T::fromRaw(scaleRaw<T>(
+        (typename T::UWide(kSub) << (2 * F)),
+        cell.raw() < 0 ? typename T::UWide(typename T::URaw(
+                             typename T::URaw(0) - typename T::URaw(cell.raw())))
+                       : typename T::UWide(cell.raw()),
+        cell.raw() < 0));
+  }
+  // |quotient| of numerator / divisor, rounded half up, then signed and
+  // saturated as Fixed's divide does.
+  template <class T>
+  static constexpr typename T::Raw scaleRaw(typename T::UWide numerator,
+                                            typename T::UWide divisor,
+                                            bool negative) {
+    return divisor == 0
+               ? T::kRawMax
+               : saturate<T>((numerator + divisor / 2) / divisor, negative);
+  }
+  template <class T>
+  static constexpr typename T::Raw saturate(typename T::UWide m,
+                                            bool negative) {
+    return m == 0 ? typename T::Raw(0)
+           : negative ? (m > typename T::UWide(T::kRawMax) + 1
+                           ? T::kRawMin
+                           : typename T::Raw(-typename T::Raw(m - 1) - 1))
+                    : (m > typename T::UWide(T::kRawMax)
+                           ? T::kRawMax
+                           : typename T::Raw(m));
+  }
+  static constexpr Float scaleFor(Float cell) {
+    return cell.toFloat() == 0.0f ? Float::largest()
+                                  : Float(float(kSub) / cell.toFloat());
   }
 
   static void mark(char* text, Units fromCell, Units toCell, char c) {
