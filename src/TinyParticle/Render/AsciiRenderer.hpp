@@ -213,8 +213,9 @@ class AsciiRenderer {
                     char* text) const {
     const Units x = toUnitsX(p.position.x);
     const Units y = toUnitsY(p.position.y);
-    const Units rx = clampUnits((p.radius * mScaleX).toInt());
-    const Units ry = clampUnits((p.radius * mScaleY).toInt());
+    // (radius - 0) * scale is radius * scale to the bit: toUnits' code.
+    const Units rx = toUnits(p.radius, S(), mScaleX);
+    const Units ry = toUnits(p.radius, S(), mScaleY);
     const char c = p.isStatic() ? '+' : (rx < kSub / 2 ? 'o' : 'O');
     const Units centre = Units(low + kSub / 2);  // of the row's cells
     const Units dy = Units(centre - y);
@@ -252,6 +253,14 @@ class AsciiRenderer {
              text);
   }
 
+  // x of the segment (x0, y0)-(x1, y1) at height y (y0 < y1), out of line:
+  // its two 32-bit products and division once in flash.
+  static TINYPARTICLE_NOINLINE Units xAtHeight(Units x0, Units y0, Units x1,
+                                               Units y1, Units y) {
+    const int32_t across = x1 - x0, up = y1 - y0;
+    return Units(x0 + (y - y0) * across / up);
+  }
+
   void drawLink(const V& pa, const V& pb, Units low, Units high,
                 char* text) const {
     Units x0 = toUnitsX(pa.x), y0 = toUnitsY(pa.y);
@@ -266,9 +275,8 @@ class AsciiRenderer {
       // x where the segment enters and leaves the band.
       const Units ya = y0 > low ? y0 : low;
       const Units yb = y1 < high - 1 ? y1 : Units(high - 1);
-      const int32_t across = x1 - x0, up = y1 - y0;
-      xa = Units(x0 + (ya - y0) * across / up);
-      xb = Units(x0 + (yb - y0) * across / up);
+      xa = xAtHeight(x0, y0, x1, y1, ya);
+      xb = xAtHeight(x0, y0, x1, y1, yb);
     }
     if (xa > xb) {
       const Units t = xa; xa = xb; xb = t;
