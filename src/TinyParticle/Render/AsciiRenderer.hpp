@@ -13,6 +13,12 @@
 //   '+' an immovable particle
 //   '.' a rod, cable, spring, bungee or stiff spring (to its anchor, too)
 //
+// A scene whose particles are all smaller than half a cell (in width and in
+// height) looks the same with ParticleShape::kPoints as the fourth template
+// argument: each particle is then one character, where it is, and the
+// circle code (a square root and a division per row, about 400 bytes on
+// the Nano) is not linked.
+//
 // Draw a whole frame with draw(), or one line per call with drawLine() so
 // that a sketch never waits for a slow serial line (check that the output
 // has lineLength() bytes free first).
@@ -29,7 +35,16 @@
 
 namespace tinyparticle {
 
-template <class W, uint8_t kColumns = 40, uint8_t kRows = 20>
+// How the renderer draws particles (its fourth template argument).
+namespace ParticleShape {
+enum : uint8_t {
+  kCircles = 0,  // filled to the radius
+  kPoints = 1,   // one character at the centre, whatever the radius
+};
+}
+
+template <class W, uint8_t kColumns = 40, uint8_t kRows = 20,
+          uint8_t kParticleShape = ParticleShape::kCircles>
 class AsciiRenderer {
   static_assert(kColumns >= 1 && kColumns <= 200 && kRows >= 1,
                 "1..200 columns, at least 1 row");
@@ -220,7 +235,8 @@ class AsciiRenderer {
     const Units centre = Units(low + kSub / 2);  // of the row's cells
     const Units dy = Units(centre - y);
     bool drawn = false;
-    if (ry > 0 && dy <= ry && dy >= -ry) {
+    if (kParticleShape == ParticleShape::kCircles && ry > 0 && dy <= ry &&
+        dy >= -ry) {
       // Half-width of the ellipse at this height, in sub-cell units.
       const Units hx = Units(
           rx * floorSqrt(int32_t(ry) * ry - int32_t(dy) * dy) / ry);
