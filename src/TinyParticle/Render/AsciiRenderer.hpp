@@ -57,10 +57,8 @@ class AsciiRenderer {
   // code (its scales are folded at compile time). A cell size of 0 gives
   // the largest scale (as S(16) / 0 does, without its error flag).
   constexpr AsciiRenderer(S left, S bottom, S cellWidth, S cellHeight)
-      : mLeft(left),
-        mBottom(bottom),
-        mScaleX(scaleFor(cellWidth)),
-        mScaleY(scaleFor(cellHeight)),
+      : mX(left, scaleFor(cellWidth)),
+        mY(bottom, scaleFor(cellHeight)),
         mLine(0),
         mBorder(true),
         mHome(false) {}
@@ -138,6 +136,13 @@ class AsciiRenderer {
   // and the sum or difference of two (8-bit code works on half the bytes),
   // 32 bits their products.
   typedef int16_t Units;
+  // Where the view starts along an axis, and its sub-cell units per metre.
+  struct Axis {
+    constexpr Axis(S from, S unitsPerMetre)
+        : origin(from), scale(unitsPerMetre) {}
+    S origin;
+    S scale;
+  };
   static const Units kSub = 16;       // sub-cell units per cell
   static const Units kLimit = 16000;
 
@@ -145,11 +150,14 @@ class AsciiRenderer {
     return Units(v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v));
   }
   // One out-of-line routine for both axes: x and y share its code.
-  static TINYPARTICLE_NOINLINE Units toUnits(S v, S origin, S scale) {
-    return clampUnits(((v - origin) * scale).toInt());
+  // The axis is passed by address (a call then loads 2 bytes, not 8);
+  // a length (a radius) is scaled without the origin.
+  static TINYPARTICLE_NOINLINE Units toUnits(S v, const Axis& axis,
+                                             bool isLength) {
+    return clampUnits(((isLength ? v : v - axis.origin) * axis.scale).toInt());
   }
-  Units toUnitsX(S x) const { return toUnits(x, mLeft, mScaleX); }
-  Units toUnitsY(S y) const { return toUnits(y, mBottom, mScaleY); }
+  Units toUnitsX(S x) const { return toUnits(x, mX, false); }
+  Units toUnitsY(S y) const { return toUnits(y, mY, false); }
 
   // kSub / cell (sub-cell units per metre), rounded as the scalar's own
   // division rounds it, in a constant expression.
@@ -189,7 +197,8 @@ class AsciiRenderer {
                                   : Float(float(kSub) / cell.toFloat());
   }
 
-  static void mark(char* text, Units fromCell, Units toCell, char c) {
+  static TINYPARTICLE_NOINLINE void mark(char* text, Units fromCell,
+                                         Units toCell, char c) {
     if (fromCell < 0) fromCell = 0;
     if (toCell > Units(kColumns) - 1) toCell = Units(kColumns - 1);
     for (Units k = fromCell; k <= toCell; ++k) {
@@ -200,7 +209,7 @@ class AsciiRenderer {
   }
 
   // floor(v / kSub) for negative v too, without shifting a negative value.
-  static Units cellOf(Units v) {
+  static TINYPARTICLE_NOINLINE Units cellOf(Units v) {
     return v >= 0 ? Units(uint16_t(v) / kSub)
                   : Units(-Units((uint16_t(-v) + kSub - 1) / kSub));
   }
@@ -228,9 +237,8 @@ class AsciiRenderer {
                     char* text) const {
     const Units x = toUnitsX(p.position.x);
     const Units y = toUnitsY(p.position.y);
-    // (radius - 0) * scale is radius * scale to the bit: toUnits' code.
-    const Units rx = toUnits(p.radius, S(), mScaleX);
-    const Units ry = toUnits(p.radius, S(), mScaleY);
+    const Units rx = toUnits(p.radius, mX, true);
+    const Units ry = toUnits(p.radius, mY, true);
     const char c = p.isStatic() ? '+' : (rx < kSub / 2 ? 'o' : 'O');
     const Units centre = Units(low + kSub / 2);  // of the row's cells
     const Units dy = Units(centre - y);
@@ -300,8 +308,7 @@ class AsciiRenderer {
     mark(text, cellOf(xa), cellOf(xb), '.');
   }
 
-  S mLeft, mBottom;
-  S mScaleX, mScaleY;  // sub-cell units per metre
+  Axis mX, mY;
   uint8_t mLine;
   bool mBorder;
   bool mHome;
