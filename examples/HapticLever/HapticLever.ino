@@ -202,8 +202,10 @@ Vec2<S> userForce;  // N, read by the custom force generator every step
 RealTimeLoop timing(1024, kPlotter ? 50 : 5);
 // The lever's end reaches 0.48 m: x from -0.1 to 0.5 m, y from -0.3 m up.
 // 24 x 12 characters of 2.5 x 5 cm: a line takes about 11,000 cycles.
-AsciiRenderer<HapticWorld, 24, 12> renderer(S(-0.1), S(-0.3), S(0.025),
-                                            S(0.05));
+// The end (radius 1 cm) is smaller than half a cell: drawn as a point, the
+// same characters without the renderer's circle code.
+AsciiRenderer<HapticWorld, 24, 12, ParticleShape::kPoints> renderer(
+    S(-0.1), S(-0.3), S(0.025), S(0.05));
 Servo leverServo;
 
 // ---- Analog inputs without waiting ---------------------------------------

@@ -45,6 +45,8 @@ template class World<Float, 3, 4, 4, 4, 4>;
 template class AsciiRenderer<World<Q16_16, 2, 4, 4, 4, 4> >;
 template class AsciiRenderer<World<Float, 3, 4, 4, 4, 4>, 80, 25>;
 template class AsciiRenderer<World<Q16_16, 2, 1> >;
+template class AsciiRenderer<World<Q16_16, 2, 4, 4, 4, 4>, 40, 20,
+                             ParticleShape::kPoints>;
 struct CheckClock {
   static uint32_t micros() { return 0; }
 };

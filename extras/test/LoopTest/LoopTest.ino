@@ -13,6 +13,9 @@ struct FakeClock {
 uint32_t FakeClock::now = 0;
 
 typedef BasicRealTimeLoop<FakeClock> Loop;
+// The constructor is constexpr: a global loop needs no start-up code (this
+// does not compile otherwise).
+constexpr Loop kConstantLoop(1000, 30);
 
 // Polls every millisecond for `seconds`, running what is due; returns the
 // steps run. `frames` gets the frames drawn.

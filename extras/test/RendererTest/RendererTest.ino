@@ -33,11 +33,13 @@ struct Checks {
   // 20 x 10 characters over 2 m x 2 m: cells of 0.1 m x 0.2 m.
   typedef AsciiRenderer<W, 20, 10> R;
 
-  // Row `row` of a view holding one particle, as a C string.
+  // Row `row` of a view holding one particle, as a C string; kShape:
+  // ParticleShape::kCircles (the default) or kPoints.
+  template <uint8_t kShape = ParticleShape::kCircles>
   static void row(const V& where, S radius, uint8_t row, char* out) {
     W w;
     w.addParticle(where, S(1), radius);
-    R renderer(S(0), S(0), S(0.1), S(0.2));
+    AsciiRenderer<W, 20, 10, kShape> renderer(S(0), S(0), S(0.1), S(0.2));
     renderer.renderRow(w, row, out);
     out[20] = '\0';
   }
@@ -75,6 +77,13 @@ struct Checks {
     return calls;
   }
 };
+
+// The constructor is constexpr: a global renderer needs no start-up code
+// (this does not compile otherwise), in fixed and in floating point.
+constexpr AsciiRenderer<World<Q16_16, 2, 1>, 4, 2> kConstantFixed(
+    Q16_16(0), Q16_16(0), Q16_16(0.1), Q16_16(0.2));
+constexpr AsciiRenderer<World<Float, 2, 1>, 4, 2> kConstantFloat(
+    Float(0), Float(0), Float(0.1), Float(0.2));
 
 // A point particle at (1.05, 1.1): column 10, row 4 from the top
 // (y = 1.1 is 5.5 cells up, in the 6th row from the bottom).
@@ -114,6 +123,30 @@ test(Circle_Float) {
   assertEqual(line, "        OOOOO       ");
   C::row(C::V(1.05, 1.1), Float(0.25), 5, line);
   assertEqual(line, "         OOO        ");
+}
+
+// ParticleShape::kPoints: one character at the centre. A particle smaller
+// than half a cell each way (radius 0.04 m: 0.4 and 0.2 cells) looks the
+// same as with circles, at every sub-cell offset of its centre near a cell
+// corner; a large one is one 'O' instead of a disc.
+test(Points) {
+  typedef Checks<Q16_16> C;
+  char points[21], circles[21];
+  for (uint8_t i = 0; i < 10; ++i) {
+    for (uint8_t j = 0; j < 10; ++j) {
+      const C::V where(Q16_16(0.95) + Q16_16(i) * Q16_16(0.02),
+                       Q16_16(1.1) + Q16_16(j) * Q16_16(0.02));
+      for (uint8_t r = 2; r <= 5; ++r) {
+        C::row<ParticleShape::kPoints>(where, Q16_16(0.04), r, points);
+        C::row(where, Q16_16(0.04), r, circles);
+        assertEqual(points, circles);
+      }
+    }
+  }
+  C::row<ParticleShape::kPoints>(C::V(1.05, 1.1), Q16_16(0.25), 4, points);
+  assertEqual(points, "          O         ");
+  C::row<ParticleShape::kPoints>(C::V(1.05, 1.1), Q16_16(0.25), 3, points);
+  assertEqual(points, "                    ");
 }
 
 // Off the view: nothing drawn, nothing written outside the line.

@@ -63,8 +63,8 @@ template <class Clock>
 class BasicRealTimeLoop {
  public:
   // stepsPerSecond: 1 / dt (> 0; 0 is taken as 1). framesPerSecond: 0 for
-  // no frames.
-  BasicRealTimeLoop(uint16_t stepsPerSecond, uint16_t framesPerSecond,
+  // no frames. constexpr: a global loop costs no start-up code.
+  constexpr BasicRealTimeLoop(uint16_t stepsPerSecond, uint16_t framesPerSecond,
                     uint8_t maxCatchUp = 8)
       : mStepWhole(1000000UL / atLeastOne(stepsPerSecond)),
         mStepFraction(uint16_t(1000000UL % atLeastOne(stepsPerSecond))),
@@ -157,7 +157,7 @@ class BasicRealTimeLoop {
   uint16_t stepsPerSecond() const { return mStepsPerSecond; }
 
  private:
-  static uint16_t atLeastOne(uint16_t n) { return n == 0 ? 1 : n; }
+  static constexpr uint16_t atLeastOne(uint16_t n) { return n == 0 ? 1 : n; }
 
   // now >= t on a wrapping clock (valid for spans below 35 minutes).
   static bool reached(uint32_t now, uint32_t t) {

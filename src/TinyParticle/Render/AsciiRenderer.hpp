@@ -13,6 +13,12 @@
 //   '+' an immovable particle
 //   '.' a rod, cable, spring, bungee or stiff spring (to its anchor, too)
 //
+// A scene whose particles are all smaller than half a cell (in width and in
+// height) looks the same with ParticleShape::kPoints as the fourth template
+// argument: each particle is then one character, where it is, and the
+// circle code (a square root and a division per row, about 400 bytes on
+// the Nano) is not linked.
+//
 // Draw a whole frame with draw(), or one line per call with drawLine() so
 // that a sketch never waits for a slow serial line (check that the output
 // has lineLength() bytes free first).
@@ -20,13 +26,25 @@
 
 #include <stdint.h>
 
+#include "../Configuration.hpp"
 #include "../Debug/Profile.hpp"
 #include "../Core/Access.hpp"
 #include "../Core/Generator.hpp"
+#include "../Math/Fixed.hpp"
+#include "../Math/Float.hpp"
 
 namespace tinyparticle {
 
-template <class W, uint8_t kColumns = 40, uint8_t kRows = 20>
+// How the renderer draws particles (its fourth template argument).
+namespace ParticleShape {
+enum : uint8_t {
+  kCircles = 0,  // filled to the radius
+  kPoints = 1,   // one character at the centre, whatever the radius
+};
+}
+
+template <class W, uint8_t kColumns = 40, uint8_t kRows = 20,
+          uint8_t kParticleShape = ParticleShape::kCircles>
 class AsciiRenderer {
   static_assert(kColumns >= 1 && kColumns <= 200 && kRows >= 1,
                 "1..200 columns, at least 1 row");
@@ -35,11 +53,12 @@ class AsciiRenderer {
   typedef typename W::Scalar S;
   typedef typename W::Vec V;
 
-  AsciiRenderer(S left, S bottom, S cellWidth, S cellHeight)
-      : mLeft(left),
-        mBottom(bottom),
-        mScaleX(S(kSub) / cellWidth),
-        mScaleY(S(kSub) / cellHeight),
+  // constexpr: a global renderer with constant bounds costs no start-up
+  // code (its scales are folded at compile time). A cell size of 0 gives
+  // the largest scale (as S(16) / 0 does, without its error flag).
+  constexpr AsciiRenderer(S left, S bottom, S cellWidth, S cellHeight)
+      : mX(left, scaleFor(cellWidth)),
+        mY(bottom, scaleFor(cellHeight)),
         mLine(0),
         mBorder(true),
         mHome(false) {}
@@ -117,20 +136,69 @@ class AsciiRenderer {
   // and the sum or difference of two (8-bit code works on half the bytes),
   // 32 bits their products.
   typedef int16_t Units;
+  // Where the view starts along an axis, and its sub-cell units per metre.
+  struct Axis {
+    constexpr Axis(S from, S unitsPerMetre)
+        : origin(from), scale(unitsPerMetre) {}
+    S origin;
+    S scale;
+  };
   static const Units kSub = 16;       // sub-cell units per cell
   static const Units kLimit = 16000;
 
   static Units clampUnits(int32_t v) {
     return Units(v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v));
   }
-  Units toUnitsX(S x) const {
-    return clampUnits(((x - mLeft) * mScaleX).toInt());
+  // One out-of-line routine for both axes: x and y share its code.
+  // The axis is passed by address (a call then loads 2 bytes, not 8);
+  // a length (a radius) is scaled without the origin.
+  static TINYPARTICLE_NOINLINE Units toUnits(S v, const Axis& axis,
+                                             bool isLength) {
+    return clampUnits(((isLength ? v : v - axis.origin) * axis.scale).toInt());
   }
-  Units toUnitsY(S y) const {
-    return clampUnits(((y - mBottom) * mScaleY).toInt());
+  Units toUnitsX(S x) const { return toUnits(x, mX, false); }
+  Units toUnitsY(S y) const { return toUnits(y, mY, false); }
+
+  // kSub / cell (sub-cell units per metre), rounded as the scalar's own
+  // division rounds it, in a constant expression.
+  template <uint8_t I, uint8_t F>
+  static constexpr Fixed<I, F> scaleFor(Fixed<I, F> cell) {
+    typedef Fixed<I, F> T;
+    return T::fromRaw(scaleRaw<T>(
+        (typename T::UWide(kSub) << (2 * F)),
+        cell.raw() < 0 ? typename T::UWide(typename T::URaw(
+                             typename T::URaw(0) - typename T::URaw(cell.raw())))
+                       : typename T::UWide(cell.raw()),
+        cell.raw() < 0));
+  }
+  // |quotient| of numerator / divisor, rounded half up, then signed and
+  // saturated as Fixed's divide does.
+  template <class T>
+  static constexpr typename T::Raw scaleRaw(typename T::UWide numerator,
+                                            typename T::UWide divisor,
+                                            bool negative) {
+    return divisor == 0
+               ? T::kRawMax
+               : saturate<T>((numerator + divisor / 2) / divisor, negative);
+  }
+  template <class T>
+  static constexpr typename T::Raw saturate(typename T::UWide m,
+                                            bool negative) {
+    return m == 0 ? typename T::Raw(0)
+           : negative ? (m > typename T::UWide(T::kRawMax) + 1
+                           ? T::kRawMin
+                           : typename T::Raw(-typename T::Raw(m - 1) - 1))
+                    : (m > typename T::UWide(T::kRawMax)
+                           ? T::kRawMax
+                           : typename T::Raw(m));
+  }
+  static constexpr Float scaleFor(Float cell) {
+    return cell.toFloat() == 0.0f ? Float::largest()
+                                  : Float(float(kSub) / cell.toFloat());
   }
 
-  static void mark(char* text, Units fromCell, Units toCell, char c) {
+  static TINYPARTICLE_NOINLINE void mark(char* text, Units fromCell,
+                                         Units toCell, char c) {
     if (fromCell < 0) fromCell = 0;
     if (toCell > Units(kColumns) - 1) toCell = Units(kColumns - 1);
     for (Units k = fromCell; k <= toCell; ++k) {
@@ -141,7 +209,7 @@ class AsciiRenderer {
   }
 
   // floor(v / kSub) for negative v too, without shifting a negative value.
-  static Units cellOf(Units v) {
+  static TINYPARTICLE_NOINLINE Units cellOf(Units v) {
     return v >= 0 ? Units(uint16_t(v) / kSub)
                   : Units(-Units((uint16_t(-v) + kSub - 1) / kSub));
   }
@@ -169,13 +237,14 @@ class AsciiRenderer {
                     char* text) const {
     const Units x = toUnitsX(p.position.x);
     const Units y = toUnitsY(p.position.y);
-    const Units rx = clampUnits((p.radius * mScaleX).toInt());
-    const Units ry = clampUnits((p.radius * mScaleY).toInt());
+    const Units rx = toUnits(p.radius, mX, true);
+    const Units ry = toUnits(p.radius, mY, true);
     const char c = p.isStatic() ? '+' : (rx < kSub / 2 ? 'o' : 'O');
     const Units centre = Units(low + kSub / 2);  // of the row's cells
     const Units dy = Units(centre - y);
     bool drawn = false;
-    if (ry > 0 && dy <= ry && dy >= -ry) {
+    if (kParticleShape == ParticleShape::kCircles && ry > 0 && dy <= ry &&
+        dy >= -ry) {
       // Half-width of the ellipse at this height, in sub-cell units.
       const Units hx = Units(
           rx * floorSqrt(int32_t(ry) * ry - int32_t(dy) * dy) / ry);
@@ -208,6 +277,14 @@ class AsciiRenderer {
              text);
   }
 
+  // x of the segment (x0, y0)-(x1, y1) at height y (y0 < y1), out of line:
+  // its two 32-bit products and division once in flash.
+  static TINYPARTICLE_NOINLINE Units xAtHeight(Units x0, Units y0, Units x1,
+                                               Units y1, Units y) {
+    const int32_t across = x1 - x0, up = y1 - y0;
+    return Units(x0 + (y - y0) * across / up);
+  }
+
   void drawLink(const V& pa, const V& pb, Units low, Units high,
                 char* text) const {
     Units x0 = toUnitsX(pa.x), y0 = toUnitsY(pa.y);
@@ -222,9 +299,8 @@ class AsciiRenderer {
       // x where the segment enters and leaves the band.
       const Units ya = y0 > low ? y0 : low;
       const Units yb = y1 < high - 1 ? y1 : Units(high - 1);
-      const int32_t across = x1 - x0, up = y1 - y0;
-      xa = Units(x0 + (ya - y0) * across / up);
-      xb = Units(x0 + (yb - y0) * across / up);
+      xa = xAtHeight(x0, y0, x1, y1, ya);
+      xb = xAtHeight(x0, y0, x1, y1, yb);
     }
     if (xa > xb) {
       const Units t = xa; xa = xb; xb = t;
@@ -232,8 +308,7 @@ class AsciiRenderer {
     mark(text, cellOf(xa), cellOf(xb), '.');
   }
 
-  S mLeft, mBottom;
-  S mScaleX, mScaleY;  // sub-cell units per metre
+  Axis mX, mY;
   uint8_t mLine;
   bool mBorder;
   bool mHome;
