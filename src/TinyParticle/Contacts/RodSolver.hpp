@@ -217,12 +217,12 @@ struct RodSolver {
   // back (a step undone).
   TINYPARTICLE_NOINLINE static void keepVelocities(W& world, V* saved,
                                                   bool back) {
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-      V& velocity = world.particleAt(i).velocity;
+    P* p = &world.particleAt(0);  // (the particles are one array)
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (back) {
-        velocity = saved[i];
+        p->velocity = saved[i];
       } else {
-        saved[i] = velocity;
+        saved[i] = p->velocity;
       }
     }
   }
