@@ -20,8 +20,10 @@
 //     mended by moving the ends alone. A rod that turns by more than
 //     1/16 rad in a step gets its exact length in closed form instead
 //     (positionSpeed()); along a chain, further passes then take in what
-//     its neighbours did. Then every particle moves once, x += dt v, and
-//     gets the rest of gravity's kick.
+//     its neighbours did. Where they converge slowly or not at all (a
+//     whip's end turning by tens of degrees in a step), the step is undone
+//     and taken as two halves (step()). Then every particle moves once,
+//     x += dt v, and gets the rest of gravity's kick.
 //  2. Velocities (RATTLE). The directions at the end of the step, u'_i,
 //     and impulses along them that remove every rod's stretching speed:
 //       sum_j C'_ij nu_j = -w . u'_i.
@@ -93,6 +95,10 @@ struct RodSolver {
   }
 
   static const uint8_t kMaxPasses = 8;
+  // Whether a step may be taken as two halves (see step()): not in worlds
+  // of one or two rods, which do not whip (a double pendulum's passes
+  // converge at 256 steps a second), and so link none of its code.
+  static const bool kHalves = W::kConstraintCapacity > 2;
 
   // A rod's slot makes no contacts: this marks it (World::isRod()).
   static void generate(W&, Slot&, uint8_t) {}
@@ -122,6 +128,11 @@ struct RodSolver {
       LoneRods<W>::template solveAll<false>(world, byDt, invDt);
       return;
     }
+    step(world, byDt, invDt, true);
+  }
+
+  // The two solves of a step of dt (byDt, invDt); `mayHalve`: see below.
+  static void step(W& world, const Scaler<S>& byDt, S invDt, bool mayHalve) {
     const bool coupled = (WorldAccess::rodState(world) & W::kRodsCoupled) != 0;
     Pass pass(byDt, invDt);
     pass.coupled = coupled;
@@ -133,6 +144,19 @@ struct RodSolver {
     // take further passes (Newton's iterations, or Gauss-Seidel) until
     // every rod is within tolerance() of its length.
     pass.positions = true;
+    // A step in which a chain turns so fast that its passes converge
+    // slowly or not at all (a whip's end at a coarse step: the directions
+    // the rows were factored with are far from the rods' new ones) is
+    // undone and taken as two steps of dt / 2, once: when a rod is still
+    // more than 8 tolerances off after the second pass, or off at all
+    // after the last. The integrator's half kick of gravity for dt is then
+    // the first half step's whole kick, and each half step's
+    // movePositions() gives a quarter: the sum is right. Coupled chains
+    // converge slowly anyway: they take their passes.
+    static V saved[W::kParticleCapacity];  // (on the stack: +180 B of code)
+    const bool kept = kHalves && !coupled && mayHalve;
+    if (kept) keepVelocities(world, saved, false);
+    const S held = tolerance();
     uint8_t n = 0;
     for (;;) {
       pass.worst = S();
@@ -141,7 +165,19 @@ struct RodSolver {
       pass.first = false;
       if (++n == kMaxPasses) break;
       if (!coupled && !pass.turned) break;
-      if (n > 1 && pass.worst < tolerance()) break;
+      if (n > 1 && pass.worst < held) break;
+      if (kHalves && n == 2 && kept && pass.worst > held * S(8)) {
+        n = kMaxPasses;  // as if out of passes: halved below
+        break;
+      }
+    }
+    if (kHalves && n == kMaxPasses && kept && !(pass.worst < held)) {
+      keepVelocities(world, saved, true);
+      const Scaler<S> byHalf(detail::half(byDt.factor()));
+      const S invHalf = invDt + invDt;
+      step(world, byHalf, invHalf, false);
+      step(world, byHalf, invHalf, false);
+      return;
     }
     // Rounding leaves a few units of a fixed-point scalar; a rod off by a
     // millimetre after all the passes is one that cannot be held.
@@ -176,6 +212,20 @@ struct RodSolver {
 
  private:
   friend struct LoneRods<W>;  // shares the step equations and Pass
+
+  // Saves every particle's velocity in `saved`, or with `back` puts it
+  // back (a step undone).
+  TINYPARTICLE_NOINLINE static void keepVelocities(W& world, V* saved,
+                                                  bool back) {
+    P* p = &world.particleAt(0);  // (the particles are one array)
+    for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
+      if (back) {
+        p->velocity = saved[i];
+      } else {
+        saved[i] = p->velocity;
+      }
+    }
+  }
 
   // A row of the solve, for one step.
   struct Row {
