@@ -4,9 +4,11 @@
 //   1  the built-in anchored spring (World::addSpring), on one particle
 //   2  the same spring written in this sketch (World::addForce)
 //   3  the built-in drag (World::addDrag), on each of the 4 particles
-//   4  the same drag written in this sketch
+//   4  the same drag written as a sketch would (World::addForce)
 //   5  the built-in plane of any normal (World::addPlane), for each particle
-//   6  the same plane written in this sketch (World::addConstraint)
+//   6  the same plane written as a sketch would (World::addConstraint)
+// The sketch-written drag and plane are the classes the generator tests
+// check bit for bit against the built-ins (Testing/GeneratorChecks.hpp).
 // Every case has the same world (Q16.16, 2D: 4 particles, gravity) and
 // steps it 512 times at 1/256 s, timing each step with Timer1
 // (Testing/CycleCounter.hpp, the empty window taken out). It prints
@@ -22,6 +24,7 @@
 #include <avr/sleep.h>
 
 #include <TinyParticle/Testing/CycleCounter.hpp>
+#include <TinyParticle/Testing/GeneratorChecks.hpp>
 
 using namespace tinyparticle::testing;
 
@@ -45,31 +48,9 @@ struct SketchSpring {  // Forces/Spring.hpp's anchored spring
   }
 };
 
-struct SketchDrag {  // Forces/Drag.hpp
-  S k1, k2;
-  void apply(W::ParticleType& p, S) {
-    S speedSquared = p.velocity.magnitudeSquared();
-    if (speedSquared == S()) return;
-    S coefficient = k1;
-    if (k2 != S()) coefficient += k2 * sqrt(speedSquared);
-    p.acceleration.addScaled(p.velocity, -(coefficient * p.inverseMass));
-  }
-};
-
-struct SketchPlane {  // Contacts/Plane.hpp, any normal
-  V normal;
-  S offset;
-  bool contact(const W::ParticleType& p, V& unit, S& penetration) {
-    penetration = offset + p.radius - dot(normal, p.position);
-    if (!(penetration >= -W::contactMargin())) return false;
-    unit = normal;
-    return true;
-  }
-};
-
 SketchSpring spring = {V(0.0, 1.0), S(40), S(0.3)};
-SketchDrag drag = {S(0.3), S(0.1)};
-SketchPlane plane = {V(-0.6, 0.8), S(0)};
+UserDrag<W> drag = {S(0.3), S(0.1)};
+UserPlane<W> plane = {V(-0.6, 0.8), S(0)};
 
 void build() {
   for (uint8_t i = 0; i < 4; ++i) {

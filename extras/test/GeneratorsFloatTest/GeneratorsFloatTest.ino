@@ -16,18 +16,6 @@ typedef Float S;
 typedef World<S, 2, 3, 2, 2, 4> W;  // one world type for every test
 typedef W::Vec V;
 
-// Drag k1 |v| + k2 |v|^2 against the velocity, as Forces/Drag.hpp.
-struct UserDrag {
-  S k1, k2;
-  void apply(Particle<S, 2>& p, S) {
-    S speedSquared = p.velocity.magnitudeSquared();
-    if (speedSquared == S()) return;
-    S coefficient = k1;
-    if (k2 != S()) coefficient += k2 * sqrt(speedSquared);
-    p.acceleration.addScaled(p.velocity, -(coefficient * p.inverseMass));
-  }
-};
-
 // Three particles of 0.2, 1 and 3 kg thrown at 4 m/s in different
 // directions under gravity and drag (k1 = 0.3 N s/m, k2 = 0.1 N s^2/m^2),
 // for 2 s at 1/256 s. Returns the first step at which the worlds differ,
@@ -44,7 +32,7 @@ static uint16_t dragOnEach(bool& slowed) {
     worlds[k]->addGravity();
   }
   builtIn.addDrag(S(0.3), S(0.1));
-  UserDrag drag = {S(0.3), S(0.1)};
+  testing::UserDrag<W> drag = {S(0.3), S(0.1)};
   if (!user.addForce(drag).isValid()) return 0xFFFF;
   for (uint16_t n = 1; n <= 512; ++n) {
     builtIn.step(S(1.0 / 256));

@@ -1,10 +1,12 @@
-// Test support: a sketch's own contact generator against the built-in one
-// it copies (World::addConstraint against World::addPlane), for any scalar.
+// Test and benchmark support: a sketch's own generators against the
+// built-in ones they copy (World::addForce against World::addDrag,
+// World::addConstraint against World::addPlane), for any scalar.
 //
-// UserPlane is written as a sketch would write it, outside the library: the
-// same operations in the same order as Contacts/Plane.hpp, run through the
-// same runner (Core/Generator.hpp), so the two worlds must agree bit for
-// bit in fixed point and float alike.
+// UserDrag and UserPlane are written as a sketch would write them, outside
+// the library: the same operations in the same order as Forces/Drag.hpp and
+// Contacts/Plane.hpp, run through the same runners (Core/Generator.hpp), so
+// the worlds must agree bit for bit in fixed point and float alike. The
+// GeneratorBenchmark times and sizes these same two classes.
 // Not included by TinyParticle.h: include it after <TinyParticle.h>.
 #pragma once
 
@@ -14,6 +16,21 @@
 
 namespace tinyparticle {
 namespace testing {
+
+// Drag k1 |v| + k2 |v|^2 against the velocity, as Forces/Drag.hpp.
+template <class W>
+struct UserDrag {
+  typedef typename W::Scalar S;
+  S k1, k2;
+
+  void apply(typename W::ParticleType& p, S) {
+    S speedSquared = p.velocity.magnitudeSquared();
+    if (speedSquared == S()) return;
+    S coefficient = k1;
+    if (k2 != S()) coefficient += k2 * sqrt(speedSquared);
+    p.acceleration.addScaled(p.velocity, -(coefficient * p.inverseMass));
+  }
+};
 
 // A half-space dot(normal, x) - r >= offset, as Contacts/Plane.hpp.
 template <class W>
