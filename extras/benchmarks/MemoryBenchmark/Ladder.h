@@ -20,27 +20,21 @@
 // the step. The values make a small, well-behaved scene; only the cost matters.
 #pragma once
 
-#include <TinyParticle.h>
+#include "Scalar.h"
 
-#ifndef SCALAR
-#define SCALAR 1  // 1 = Q16_16, 2 = Float
-#endif
 #ifndef DIM
 #define DIM 2
 #endif
 
 namespace ladder {
 
+using measuredScalar::S;
+using measuredScalar::Stored;
+// A constant as stored (folded at compile time: the inputs are static data).
 #if SCALAR == 1
-typedef Q16_16 S;
-typedef int32_t Stored;
 #define LADDER_STORE(v) (Q16_16(v).raw())
-#elif SCALAR == 2
-typedef Float S;
-typedef float Stored;
-#define LADDER_STORE(v) (Float(v).toFloat())
 #else
-#error "SCALAR must be 1 (Q16_16) or 2 (Float)"
+#define LADDER_STORE(v) (Float(v).toFloat())
 #endif
 
 const uint8_t kParticles = FEATURE >= 3 ? 2 : 1;
@@ -166,11 +160,7 @@ inline void build() {
 
 inline void step() {
   gWorld.step(input(kDt));
-#if SCALAR == 1
-  gSink = gWorld.particleAt(0).position.y.raw();
-#else
-  gSink = gWorld.particleAt(0).position.y.toFloat();
-#endif
+  gSink = measuredScalar::stored(gWorld.particleAt(0).position.y);
 }
 
 }  // namespace ladder

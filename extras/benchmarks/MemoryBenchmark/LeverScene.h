@@ -6,23 +6,13 @@
 // a rung of it.
 #pragma once
 
-#include <TinyParticle.h>
-
-#ifndef SCALAR
-#define SCALAR 1  // 1 = Q16_16, 2 = Float
-#endif
+#include "Scalar.h"
 
 namespace leverScene {
 
-#if SCALAR == 1
-typedef Q16_16 S;
-typedef int32_t Stored;
-#elif SCALAR == 2
-typedef Float S;
-typedef float Stored;
-#else
-#error "SCALAR must be 1 (Q16_16) or 2 (Float)"
-#endif
+using measuredScalar::S;
+using measuredScalar::Stored;
+using measuredScalar::stored;
 
 LeverWorld<S, 2> gWorld;
 Vec2<S> gPush;  // the user's force: zero here, so the lever falls and swings
@@ -33,11 +23,7 @@ inline void build() { gLever = buildLever(gWorld, &gPush); }
 
 inline void step() {
   gWorld.step(S(1.0 / 256));
-#if SCALAR == 1
-  gEndY = gWorld.particle(gLever.end)->position.y.raw();
-#else
-  gEndY = gWorld.particle(gLever.end)->position.y.toFloat();
-#endif
+  gEndY = stored(gWorld.particle(gLever.end)->position.y);
 }
 
 }  // namespace leverScene

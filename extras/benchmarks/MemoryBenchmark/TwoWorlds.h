@@ -6,23 +6,13 @@
 // shared between the two types. MemoryBenchmark builds it with SCENE=2.
 #pragma once
 
-#include <TinyParticle.h>
-
-#ifndef SCALAR
-#define SCALAR 1  // 1 = Q16_16, 2 = Float
-#endif
+#include "Scalar.h"
 
 namespace twoWorlds {
 
-#if SCALAR == 1
-typedef Q16_16 S;
-typedef int32_t Stored;
-#elif SCALAR == 2
-typedef Float S;
-typedef float Stored;
-#else
-#error "SCALAR must be 1 (Q16_16) or 2 (Float)"
-#endif
+using measuredScalar::S;
+using measuredScalar::Stored;
+using measuredScalar::stored;
 
 LeverWorld<S, 2> gWorld;        // the lever scene's world (its errors are reported)
 World<S, 2, 3, 2, 2, 0> gOther;  // another type: other capacities
@@ -39,12 +29,13 @@ inline void build() {
 inline void step() {
   gWorld.step(S(1.0 / 256));
   gOther.step(S(1.0 / 256));
+  // Both ends' heights reach the volatile (an xor of the raw bits, or a sum).
 #if SCALAR == 1
-  gEndY = gWorld.particle(gLever.end)->position.y.raw() ^
-          gOther.particle(gOtherLever.end)->position.y.raw();
+  gEndY = stored(gWorld.particle(gLever.end)->position.y) ^
+          stored(gOther.particle(gOtherLever.end)->position.y);
 #else
-  gEndY = gWorld.particle(gLever.end)->position.y.toFloat() +
-          gOther.particle(gOtherLever.end)->position.y.toFloat();
+  gEndY = stored(gWorld.particle(gLever.end)->position.y) +
+          stored(gOther.particle(gOtherLever.end)->position.y);
 #endif
 }
 
