@@ -36,10 +36,8 @@ struct ParticleSteps {
   // moves, and a call per particle cost a spring in Float 1 %); else the
   // out-of-line move() that movePositions() shares.
   template <bool kMoveHere>
-  static void integrate(P* particles, uint8_t count,
-                                              const V& uniformStep,
-                                              const Scaler<S>& byDt,
-                                              bool andMove, uint16_t& error) {
+  static void integrate(P* particles, uint8_t count, const V& uniformStep,
+                        const Scaler<S>& byDt, bool andMove, uint16_t& error) {
     S dampingUnit = S();
     bool haveDampingUnit = false;
     for (uint8_t i = 0; i < count; ++i) {
@@ -81,10 +79,8 @@ struct ParticleSteps {
   // For the rod solver: x += v dt for every movable particle, then `rest`,
   // the rest of the uniform acceleration's kick (integrate() gave the
   // first half).
-  static void movePositions(P* particles, uint8_t count,
-                                                  const V& rest,
-                                                  const Scaler<S>& byDt,
-                                                  uint16_t& error) {
+  static void movePositions(P* particles, uint8_t count, const V& rest,
+                            const Scaler<S>& byDt, uint16_t& error) {
     for (uint8_t i = 0; i < count; ++i) {
       P& p = particles[i];
       if (!isMoving(p)) continue;

@@ -746,7 +746,6 @@ class World
     Steps::movePositions(&particleAt(0), kParticles, rest, byDt, mError);
   }
 
-
   // During a step, for contact generators: multiplies by the step's dt.
   const Scaler<S>& stepScaler() const {
     return StepScalerStore::stepScaler();
