@@ -19,6 +19,15 @@ test(chainOfEightAt256Hz) {
   assertEqual(r.error, (uint16_t) 0);
 }
 
+// The double pendulum at the coarse step too: issue 9 bounds chains of two
+// and eight at both step rates.
+test(doublePendulumAt256Hz) {
+  const ChainResult r = ChainChecks<S>::run(2, 256, 2560);
+  assertLess(r.linkError, 0.005f);
+  assertLess(r.energyError, 0.05f);
+  assertEqual(r.error, (uint16_t) 0);
+}
+
 test(doublePendulumAt1024Hz) {
   const ChainResult r = ChainChecks<S>::run(2, 1024, 10240);
   assertLess(r.linkError, 0.005f);
