@@ -25,7 +25,7 @@ import tempfile
 from runner import REPO, BenchError, log
 
 COLUMNS = ["cycles_baseline", "cycles_change_pct", "baseline"]
-KEY = ("scene", "scalar", "dim", "n", "dt_ms", "seconds")
+KEY = ("scene", "scalar", "dim", "n", "dt_ms", "seconds", "board")
 
 
 def git(*args):

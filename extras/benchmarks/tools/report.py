@@ -175,8 +175,10 @@ def scenes_markdown(rows, tools, quick):
         "n counts the particles, the fixed pivot of the lever and of the "
         "pendulum included, but the beads only for the chain and the rope. "
         "The chain of 16 beads runs on a simulated ATmega2560 (Mega, 16 MHz, "
-        "the same AVR core and instruction timings): its world does not fit "
-        "in the Nano's 2 KB of RAM. NA: the scalar cannot represent dt, or "
+        "the same AVR core; a call or return takes a cycle more for its "
+        "3-byte return address): its world does not fit in the Nano's 2 KB "
+        "of RAM. The chain of 8 runs on the Mega too, so that the doubling "
+        "from 8 to 16 compares runs on one chip. NA: the scalar cannot represent dt, or "
         "(position errors) the scene is chaotic (more than 2 balls), or "
         "(energy errors) the scene loses energy by design (balls, rope).",
         "",
@@ -353,10 +355,11 @@ def scenes_plot(rows, out_dir, tmp):
 
 
 def growth(rows, r):
-    """Cycles per step over those of the chain half as long (same scalar and
-    dt), or None."""
+    """Cycles per step over those of the chain half as long (same scalar, dt
+    and board), or None."""
     half = [o for o in rows if o["scene"] == "chain" and o["scalar"] == r["scalar"]
-            and o["dt_ms"] == r["dt_ms"] and num(o["n"]) == num(r["n"]) / 2]
+            and o["dt_ms"] == r["dt_ms"] and num(o["n"]) == num(r["n"]) / 2
+            and o.get("board") == r.get("board")]
     if not half or not num(half[0]["cycles_per_step"]) or not num(r["cycles_per_step"]):
         return None
     return num(r["cycles_per_step"]) / num(half[0]["cycles_per_step"])
@@ -437,31 +440,36 @@ def links_markdown(rows, prefix):
 
 def chains_plot(rows, out_dir, tmp):
     """Chain: cycles per step against N, log-log, dt = 1/256, with the goal
-    line (x2.1 per doubling from the Q16.16 chain of 2)."""
+    line (x2.1 per doubling from the Q16.16 chain of 2). The Mega's runs
+    (N = 8 and 16) are a line of their own: a doubling is read on one chip."""
     series = []
     for s in SCENE_SCALARS:
-        pts = sorted((int(r["n"]), num(r["cycles_per_step"])) for r in rows
-                     if r["scene"] == "chain" and r["scalar"] == s
-                     and dt_label(r["dt_ms"]) == "1/256" and num(r["cycles_per_step"]))
-        if not pts:
-            continue
-        data = os.path.join(tmp, "chain-%s.dat" % s)
-        with open(data, "w") as f:
-            for n, c in pts:
-                f.write("%d %s\n" % (n, c))
-        series.append((s, data, pts))
+        for board in ("nano", "mega"):
+            pts = sorted((int(r["n"]), num(r["cycles_per_step"])) for r in rows
+                         if r["scene"] == "chain" and r["scalar"] == s
+                         and r.get("board", "nano") == board
+                         and dt_label(r["dt_ms"]) == "1/256" and num(r["cycles_per_step"]))
+            if not pts:
+                continue
+            data = os.path.join(tmp, "chain-%s-%s.dat" % (s, board))
+            with open(data, "w") as f:
+                for n, c in pts:
+                    f.write("%d %s\n" % (n, c))
+            series.append((s, board, data, pts))
     if not series:
         return None
     out = os.path.join(out_dir, "chains.svg")
-    base_n, base_c = series[0][2][0]
-    plots = ["%s using 1:2 with linespoints pt 7 lw 2 lc rgb '%s' title '%s'" % (
-        quote(data), COLORS[s], s) for s, data, _ in series]
+    base_n, base_c = series[0][3][0]
+    plots = ["%s using 1:2 with linespoints pt %d lw 2 %slc rgb '%s' title '%s'" % (
+        quote(data), 6 if board == "mega" else 7, "dt 3 " if board == "mega" else "",
+        COLORS[s], s + (" (Mega)" if board == "mega" else ""))
+        for s, board, data, _ in series]
     plots.append("%g * (x / %d) ** (log(2.1) / log(2)) with lines dt 2 lw 1 "
                  "lc rgb '#555555' title 'goal: x2.1 per doubling (from %s, N = %d)'"
                  % (base_c, base_n, series[0][0], base_n))
     return svg_plot(
         out, "Chain of rigid links: cycles per step against N (dt = 1/256 s; "
-        "N = 16 on an ATmega2560)",
+        "N = 8 and 16 also on an ATmega2560)",
         [
             "set logscale x 2",
             "set logscale y 10",
