@@ -74,6 +74,14 @@ constexpr S negative(S constant) { return S::fromRaw(-constant.raw()); }
 // a * n without rounding (the product of a value and a whole number is
 // exact in fixed point): for |a * n| well inside Q16.16's range, as here.
 inline S timesWhole(S a, int16_t n) { return S::fromRaw(a.raw() * n); }
+// The sketch divides with whole numbers only, whose division the Arduino
+// core links anyway (micros()): no fixed-point division is linked for it.
+// 1 / a for a > 1/65536, rounded as S's own division rounds it: the raw
+// (2^32 + a/2) / a, as 1 + (2^32 + a/2 - a) / a, which fits 32 bits.
+inline S reciprocal(S a) {
+  const uint32_t r = uint32_t(a.raw());
+  return S::fromRaw(long((0UL - (r - r / 2)) / r + 1));
+}
 
 // ---- Wiring (extras/doc/wiring.md) ---------------------------------------
 const uint8_t kFsrDownPin = A0;     // squeezed when the user pushes down
@@ -127,14 +135,22 @@ S fsrNewtons(int reading) {
 }
 #else
 const int kFsrLimit = 960;  // the fitted curve has a pole near 990
+// newtons = x * 0.00981 / denominator in one division of whole numbers
+// (see reciprocal()): x * 0.00981 N/g in units of 2^-28 (at most 2.6e9)
+// over the denominator (0.50 to 4.6) in units of 2^-14 is newtons in units
+// of 2^-14, within 2.5e-4 of the curve (the fixed-point quotient: 2e-4).
+// It runs for every reading: a second division for the last two bits
+// would take the loop's spare time that the frames need.
+const uint32_t kNewtonsPerGram28 = 2633365;  // round(0.00981 * 2^28)
 S fsrNewtons(int reading) {
   if (reading <= 0) return S();
   if (reading > kFsrLimit) reading = kFsrLimit;
-  const S x(reading);
   const S u = S::fromRaw(long(reading) * 64);  // x / 1024, exactly
   const S denominator =
       (S(-13.664495) * u + S(10.894753)) * u + S(2.30339406);
-  return x / denominator * S(0.00981);
+  const uint32_t d = (uint32_t(denominator.raw()) + 2) >> 2;
+  const uint32_t n = uint32_t(reading) * kNewtonsPerGram28;
+  return S::fromRaw(long((n + d / 2) / d) * 4);
 }
 #endif
 
@@ -268,11 +284,11 @@ void setLeverLength(int reading) {
   const S length = kShortest + timesWhole(kLengthSpan, reading);
   world.setLength(lever.rod, length);
   leverLength = length;
-  inverseLengthSquared = S(1) / (length * length);
+  inverseLengthSquared = reciprocal(length * length);
   // Its own quotient: L x (1 / L^2) would carry the error of L^2, which
   // Q16.16 holds to 1e-4 of itself at 0.23 m (the angle at the stops then
   // printed as 32.49 deg).
-  inverseLength = S(1) / length;
+  inverseLength = reciprocal(length);
   forcePerNewton = kSensorDistance * inverseLengthSquared;
   stopX = kStopCos * length;
   stopY = kStopSin * length;
@@ -391,8 +407,66 @@ void commandServo() {
 }
 
 // ---- Serial output, never waiting ----------------------------------------
-// Lines are put together in a buffer on the stack and written in one go
-// when the transmit buffer has room for the whole line.
+// The sketch only sends (115200 baud, 8N1), so on the ATmega328P it drives
+// the UART itself: a 64-byte queue that its "data register empty"
+// interrupt empties. Arduino's Serial would also link its receiving side
+// (a second buffer, an interrupt, read() and peek()): about 800 bytes of
+// flash and 100 of RAM for nothing here. Other boards use Serial.
+// room() is how many bytes put() takes without waiting; lines are
+// queued only when there is room for all of them.
+#if defined(__AVR_ATmega328P__)
+struct SerialOut {
+  static const uint8_t kSize = 64;  // a power of two; holds kSize - 1
+  // Written by put() only (head) and by the interrupt only (tail); the
+  // device simulator (extras/hil) reads them at these places.
+  volatile uint8_t head;
+  volatile uint8_t tail;
+  uint8_t queue[kSize];
+
+  static void begin() {  // 115200 baud: UBRR 16 at double speed (2.1 % fast)
+    UCSR0A = _BV(U2X0);
+    UBRR0 = 16;
+    UCSR0C = _BV(UCSZ01) | _BV(UCSZ00);  // 8 data bits, no parity, 1 stop
+    UCSR0B = _BV(TXEN0);
+  }
+  uint8_t room() const { return uint8_t(tail - head - 1) & (kSize - 1); }
+  void put(uint8_t c) {
+    while (room() == 0) {  // waits only if the caller did not check room()
+    }
+    queue[head] = c;
+    head = uint8_t(head + 1) & (kSize - 1);
+    UCSR0B |= _BV(UDRIE0);  // (the interrupt may clear it: see there)
+  }
+  void write(uint8_t c) { put(c); }  // for the renderer
+};
+SerialOut serialOut;
+
+ISR(USART_UDRE_vect) {
+  const uint8_t t = serialOut.tail;
+  if (t == serialOut.head) {  // nothing left: until put() sets it again
+    UCSR0B &= uint8_t(~_BV(UDRIE0));
+    return;
+  }
+  UDR0 = serialOut.queue[t];
+  serialOut.tail = uint8_t(t + 1) & (SerialOut::kSize - 1);
+}
+#else
+struct SerialOut {
+#ifdef SERIAL_TX_BUFFER_SIZE
+  static const uint8_t kSize = SERIAL_TX_BUFFER_SIZE;
+#else
+  static const uint8_t kSize = 64;
+#endif
+  static void begin() { Serial.begin(115200); }
+  uint8_t room() const { return uint8_t(Serial.availableForWrite()); }
+  void put(uint8_t c) { Serial.write(c); }
+  void write(uint8_t c) { put(c); }
+};
+SerialOut serialOut;
+#endif
+
+// Lines are put together in a buffer on the stack and queued in one go
+// when the queue has room for the whole line...
 const uint8_t kLineMax = 52;
 
 // ...and only between the servo's pulses. The Servo library starts and ends
@@ -402,11 +476,7 @@ const uint8_t kLineMax = 52;
 // a lever at rest twitches. So a line is queued only after a pulse has
 // ended (the pin is watched at every pass of loop()) and only if it and the
 // bytes already queued leave the UART before the next pulse can begin.
-#ifdef SERIAL_TX_BUFFER_SIZE
-const int kTxQueueMax = SERIAL_TX_BUFFER_SIZE - 1;
-#else
-const int kTxQueueMax = 63;
-#endif
+const int kTxQueueMax = SerialOut::kSize - 1;
 const uint16_t kByteUs = 87;          // 10 bits at 115200 baud
 const uint16_t kServoFrameUs = 20000; // from one pulse's start to the next
 // The quiet time after a pulse's end: the frame less the longest pulse we
@@ -434,7 +504,7 @@ void watchServoPulse() {
 bool serialQuiet(uint8_t n) {
   if (servoPinState & 1) return false;  // a pulse is on
   if (servoPinState == 0) return true;
-  int bytes = kTxQueueMax - Serial.availableForWrite() + n + 1;
+  int bytes = kTxQueueMax - serialOut.room() + n + 1;
   if (bytes < 0) bytes = 0;
   const uint16_t since = uint16_t(micros()) - pulseEndMicros;
   if (since > 2 * kServoFrameUs) {  // the pulses have stopped
@@ -497,14 +567,14 @@ bool writeStatus() {
   }
   line[n++] = '\r';
   line[n++] = '\n';
-  if (Serial.availableForWrite() < n || !serialQuiet(n)) return false;
-  Serial.write(reinterpret_cast<const uint8_t*>(line), n);
+  if (serialOut.room() < n || !serialQuiet(n)) return false;
+  for (uint8_t i = 0; i < n; ++i) serialOut.put(uint8_t(line[i]));
   return true;
 }
 
 // ---- Setup and loop ------------------------------------------------------
 void setup() {
-  Serial.begin(115200);
+  SerialOut::begin();
   // The push starts from the sensors as they are (a hand may already be on
   // the lever), not from zero: a push from nothing would kick the weight.
   AnalogInput::begin();
@@ -522,7 +592,11 @@ void setup() {
   prepareStep();
   AnalogInput::start(inputPin());
   if (!kPlotter) {
-    Serial.print(F("HapticLever: push the lever; turn the dial for its length\r\n"));
+    const char* p = reinterpret_cast<const char*>(
+        F("HapticLever: push the lever; turn the dial for its length\r\n"));
+    for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
+      serialOut.put(uint8_t(c));
+    }
   }
 }
 
@@ -553,9 +627,9 @@ void loop() {
   if (output == kIdle || timing.microsToNextStep() < 100) return;
   // (!kPlotter: in plotter mode the renderer's code is not linked.)
   if (!kPlotter && output == kFrame) {
-    if (Serial.availableForWrite() >= renderer.lineLength() &&
+    if (serialOut.room() >= renderer.lineLength() &&
         serialQuiet(renderer.lineLength()) &&
-        renderer.drawLine(world, Serial)) {
+        renderer.drawLine(world, serialOut)) {
       output = kStatus;
     }
   } else if (writeStatus()) {
