@@ -162,7 +162,7 @@ const S kLengthSpan(0.25 / 1023);   // m per dial step: 0.48 m at 1023
 const S kStopCos(0.843391);
 const S kStopSin(0.537300);
 const S kRangeRadians(0.567232);
-const S kEndBounce(0.5);            // restitution at the range ends
+// Restitution at the range ends: 1/2 (rangeEnds() halves the speed).
 // Slower than this (m/s) into a range end, the end rests on it: about what
 // gravity adds in two steps.
 const S kRestingSpeed(0.02);
@@ -212,6 +212,7 @@ const double kPushLead = 0.0175;  // s
 typedef World<S, 2, 2, 2, 1, 0> HapticWorld;
 HapticWorld world;
 LeverScene lever;
+HapticWorld::ParticleType* leverEnd;  // the end, looked up once in setup()
 Vec2<S> userForce;  // N, read by the custom force generator every step
 
 // 1,024 steps a second: timing is the one place that sets the step.
@@ -316,33 +317,37 @@ bool serviceInputs() {
 // Above or below either end (the rod at +-32.5 degrees: the end's height
 // beyond +-stopY), the lever's end is put back on it and, if it is still
 // moving out, sent back with half its speed, or stopped when it is slower
-// than kRestingSpeed. u is the range end's direction (unit); the angle
-// grows along t = (-u.y, u.x).
+// than kRestingSpeed. The lower end is handled as the upper one mirrored
+// (y and its velocity negated; positions and speeds are far from the
+// range of S, so negating their raw values is safe); there the range end's
+// direction is u = (cos, sin) and the lever leaves the range along
+// t = (-sin, cos).
 const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
+inline S mirrored(S value, bool lower) {
+  return lower ? S::fromRaw(-value.raw()) : value;
+}
+
 void rangeEnds() {
-  HapticWorld::ParticleType* end = world.particle(lever.end);
-  Vec2<S>& x = end->position;
-  Vec2<S>& v = end->velocity;
-  const S lowerStopY = S::fromRaw(-stopY.raw());
-  const bool lower = x.y < lowerStopY;
-  if (!lower && !(x.y > stopY)) return;
+  Vec2<S>& x = leverEnd->position;
+  Vec2<S>& v = leverEnd->velocity;
+  const bool lower = x.y < S();
+  if (!(mirrored(x.y, lower) > stopY)) return;
   x.x = stopX;
-  x.y = lower ? lowerStopY : stopY;
-  const S tx = lower ? kStopSin : negative(kStopSin);
-  const S speed = v.x * tx + v.y * kStopCos;  // along t
-  if (lower ? speed >= S() : speed <= S()) return;  // not moving out
+  x.y = mirrored(stopY, lower);
+  const S out = kStopCos * mirrored(v.y, lower) - kStopSin * v.x;  // along t
+  if (!(out > S())) return;  // not moving out
   S back = S();
-  if (speed > kRestingSpeed || speed < negative(kRestingSpeed)) {
-    back = -(speed * kEndBounce);
+  if (out > kRestingSpeed) {
+    back = S::fromRaw(-((out.raw() + 1) >> 1));  // -out / 2, rounded as S
     // The servo takes a new angle only every 20 ms: after a bounce it is
     // kept at the range end for a little longer than that, or the
     // prediction turns it back before the felt lever has reached the end.
     stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
   }
-  v.x = tx * back;
-  v.y = kStopCos * back;
+  v.x = negative(kStopSin) * back;
+  v.y = mirrored(kStopCos * back, lower);
 }
 
 // ---- Between steps --------------------------------------------------------
@@ -362,7 +367,7 @@ void prepareStep() {
   S felt = push + pushRate * kForceLead;
   if (felt > kPushLimit) felt = kPushLimit;
   if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
-  const Vec2<S>& end = world.particle(lever.end)->position;
+  const Vec2<S>& end = leverEnd->position;
   forceScale = felt * forcePerNewton;
   userForce.x = -end.y * forceScale;
   userForce.y = end.x * forceScale;
@@ -373,7 +378,7 @@ void prepareStep() {
 // is within 3.4e-5 rad of it (0.02 us of servo command), as close as
 // atan2(), without its code and table.
 S leverRadians() {
-  const S s = world.particle(lever.end)->position.y * inverseLength;
+  const S s = leverEnd->position.y * inverseLength;
   const S s2 = s * s;
   return s + s * s2 * (S(0.163293) + S(0.103055) * s2);
 }
@@ -382,7 +387,7 @@ S leverRadians() {
 // angular velocity and acceleration (a second-order prediction), which
 // makes up for most of the servo's delay.
 void commandServo() {
-  const HapticWorld::ParticleType* end = world.particle(lever.end);
+  const HapticWorld::ParticleType* end = leverEnd;
   const Vec2<S>& x = end->position;
   const S turnRate =
       (x.x * end->velocity.y - x.y * end->velocity.x) * inverseLengthSquared;
@@ -522,15 +527,16 @@ uint8_t appendText(char* line, uint8_t n, const __FlashStringHelper* text) {
   return n;
 }
 
-// A value with two decimals.
+// A value with two decimals (magnitudes up to 655.35).
 uint8_t appendHundredths(char* line, uint8_t n, S value) {
-  int32_t hundredths = ((value * S(100)).raw() + 0x8000L) >> 16;
-  if (hundredths < 0) {
+  uint32_t magnitude = uint32_t(value.raw());
+  if (value < S()) {
     line[n++] = '-';
-    hundredths = -hundredths;
+    magnitude = 0UL - magnitude;
   }
+  if (magnitude > 65535UL * 655) magnitude = 65535UL * 655;
   // 16-bit digits are several times faster than 32-bit ones on the AVR.
-  uint16_t h = hundredths > 65535L ? 65535u : uint16_t(hundredths);
+  uint16_t h = uint16_t((magnitude * 100 + 0x8000UL) >> 16);
   char digits[6];
   uint8_t count = 0;
   do {
@@ -586,6 +592,7 @@ void setup() {
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
   lever = buildLever(world, &userForce, kShortest);
+  leverEnd = world.particle(lever.end);
   setLeverLength(readAnalogNow(kLengthDialPin));
   // The first step needs the push as a force too (later steps get it from
   // the pass before them), or gravity alone acts for that step.
