@@ -403,12 +403,15 @@ void commandServo() {
     angle = stopHold < 0 ? negative(kRangeRadians) : kRangeRadians;
     stopHold += stopHold < 0 ? 1 : -1;
   }
-  int32_t offset = ((angle * kServoUsPerRadian).raw() + 0x8000L) >> 16;
   // Never past the range ends (the prediction overshoots them at a bounce).
-  if (offset > kServoRangeUs) offset = kServoRangeUs;
-  if (offset < -kServoRangeUs) offset = -kServoRangeUs;
-  leverServo.writeMicroseconds(kServoLevelUs +
-                               kServoDirection * int(offset));
+  S offset = angle * kServoUsPerRadian;
+  if (offset > S(kServoRangeUs)) offset = S(kServoRangeUs);
+  if (offset < S(-kServoRangeUs)) offset = S(-kServoRangeUs);
+  // Rounded to whole microseconds (halves up), shifted by 512 us so that
+  // no negative number is shifted.
+  const int us =
+      int(uint32_t(offset.raw() + 0x8000L + (512L << 16)) >> 16) - 512;
+  leverServo.writeMicroseconds(kServoLevelUs + kServoDirection * us);
 }
 
 // ---- Serial output, never waiting ----------------------------------------
