@@ -229,7 +229,8 @@ Servo leverServo;
 // start() begins a conversion, ready() says when it is done (13 ADC clocks,
 // 104 us on a 16 MHz Nano), value() gives it. On the ATmega328P this is the
 // ADC's registers; on other boards it falls back to analogRead(), which
-// waits.
+// waits, and its reading is ready a conversion's time later, so that the
+// loop's other work (the serial output) still gets passes of its own.
 #if defined(__AVR_ATmega328P__)
 struct AnalogInput {
   static void begin() {  // AVcc reference, clock / 128 (125 kHz)
@@ -245,12 +246,19 @@ struct AnalogInput {
 #else
 struct AnalogInput {
   static int last;
+  static uint16_t startMicros;
   static void begin() {}
-  static void start(uint8_t pin) { last = analogRead(pin); }
-  static bool ready() { return true; }
+  static void start(uint8_t pin) {
+    last = analogRead(pin);
+    startMicros = uint16_t(micros());
+  }
+  static bool ready() {
+    return uint16_t(uint16_t(micros()) - startMicros) >= 104;
+  }
   static int value() { return last; }
 };
 int AnalogInput::last = 0;
+uint16_t AnalogInput::startMicros = 0;
 #endif
 
 // A conversion waited for, in setup() only (the same conversion as
@@ -350,6 +358,12 @@ void rangeEnds() {
   v.y = mirrored(kStopCos * back, lower);
 }
 
+// x / 2^k rounded down, as an arithmetic shift gives it, without shifting
+// a negative number.
+inline int32_t floorShift(int32_t x, uint8_t k) {
+  return x >= 0 ? x >> k : -(-(x + 1) >> k) - 1;
+}
+
 // ---- Between steps --------------------------------------------------------
 // The physics step is the longest regular pass of the loop (about 8,500
 // cycles of the 15,625 in a step period), so it runs alone; the pass after
@@ -359,11 +373,13 @@ void rangeEnds() {
 // pushing the physical end down lifts the virtual end).
 void prepareStep() {
   rangeEnds();
-  // Averages with weights 1/4 and 1/8 per step, as shifts.
-  const S change = S::fromRaw((downNewtons - upNewtons - push).raw() >> 2);
+  // Averages with weights 1/4 and 1/8 per step, as shifts. (Each FSR reads
+  // under 19 N, so |change| < 10 N: its raw value times 1,024 fits.)
+  const S change =
+      S::fromRaw(floorShift((downNewtons - upNewtons - push).raw(), 2));
   push += change;
-  pushRate += S::fromRaw(
-      (change.raw() * long(timing.stepsPerSecond()) - pushRate.raw()) >> 3);
+  pushRate += S::fromRaw(floorShift(
+      change.raw() * long(timing.stepsPerSecond()) - pushRate.raw(), 3));
   S felt = push + pushRate * kForceLead;
   if (felt > kPushLimit) felt = kPushLimit;
   if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
@@ -507,9 +523,12 @@ void watchServoPulse() {
   }
 }
 
-// True when a line of n bytes may be queued now (see above). Without pulses
+// True when a line of n bytes may be queued now: the queue has room for it
+// and one byte more (so that it is never full: the next byte would wait),
+// and it leaves the UART between two pulses (see above). Without pulses
 // (none yet, or no servo attached) there is nothing to keep clear.
 bool serialQuiet(uint8_t n) {
+  if (serialOut.room() <= n) return false;
   if (servoPinState & 1) return false;  // a pulse is on
   if (servoPinState == 0) return true;
   int bytes = kTxQueueMax - serialOut.room() + n + 1;
@@ -520,14 +539,6 @@ bool serialQuiet(uint8_t n) {
     return true;
   }
   return since <= kQuietUs && uint16_t(bytes) * kByteUs <= kQuietUs - since;
-}
-
-uint8_t appendText(char* line, uint8_t n, const __FlashStringHelper* text) {
-  const char* p = reinterpret_cast<const char*>(text);
-  for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
-    line[n++] = c;
-  }
-  return n;
 }
 
 // A value with two decimals (magnitudes up to 655.35).
@@ -554,29 +565,25 @@ uint8_t appendHundredths(char* line, uint8_t n, S value) {
 }
 
 // The status line (or the plotter's line); false if there is no room yet.
+// Each '#' of the text is a value, in the order of the list.
+const char kStatusText[] PROGMEM =
+    "angle # deg  push # N  length # m\r\n";
+const char kPlotterText[] PROGMEM = "angle:# force:# length:#\r\n";
+
 bool writeStatus() {
+  const S values[] = {leverRadians() * S(57.29578), push, leverLength};
   char line[kLineMax];
-  const S degrees = leverRadians() * S(57.29578);
   uint8_t n = 0;
-  if (kPlotter) {
-    n = appendText(line, n, F("angle:"));
-    n = appendHundredths(line, n, degrees);
-    n = appendText(line, n, F(" force:"));
-    n = appendHundredths(line, n, push);
-    n = appendText(line, n, F(" length:"));
-    n = appendHundredths(line, n, leverLength);
-  } else {
-    n = appendText(line, n, F("angle "));
-    n = appendHundredths(line, n, degrees);
-    n = appendText(line, n, F(" deg  push "));
-    n = appendHundredths(line, n, push);
-    n = appendText(line, n, F(" N  length "));
-    n = appendHundredths(line, n, leverLength);
-    n = appendText(line, n, F(" m"));
+  uint8_t k = 0;
+  const char* p = kPlotter ? kPlotterText : kStatusText;
+  for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
+    if (c == '#') {
+      n = appendHundredths(line, n, values[k++]);
+    } else {
+      line[n++] = c;
+    }
   }
-  line[n++] = '\r';
-  line[n++] = '\n';
-  if (serialOut.room() < n || !serialQuiet(n)) return false;
+  if (!serialQuiet(n)) return false;
   for (uint8_t i = 0; i < n; ++i) serialOut.put(uint8_t(line[i]));
   return true;
 }
@@ -637,8 +644,7 @@ void loop() {
   if (output == kIdle || timing.microsToNextStep() < 100) return;
   // (!kPlotter: in plotter mode the renderer's code is not linked.)
   if (!kPlotter && output == kFrame) {
-    if (serialOut.room() >= renderer.lineLength() &&
-        serialQuiet(renderer.lineLength()) &&
+    if (serialQuiet(renderer.lineLength()) &&
         renderer.drawLine(world, serialOut)) {
       output = kStatus;
     }
