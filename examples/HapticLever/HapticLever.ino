@@ -293,11 +293,10 @@ void setLeverLength(int reading) {
   const S length = kShortest + timesWhole(kLengthSpan, reading);
   world.setLength(lever.rod, length);
   leverLength = length;
-  inverseLengthSquared = reciprocal(length * length);
-  // Its own quotient: L x (1 / L^2) would carry the error of L^2, which
-  // Q16.16 holds to 1e-4 of itself at 0.23 m (the angle at the stops then
-  // printed as 32.49 deg).
+  // 1 / L as a quotient and 1 / L^2 as its square: Q16.16 holds L^2 only to
+  // 1.4e-4 of itself at 0.23 m, and 1 / L to 2e-6.
   inverseLength = reciprocal(length);
+  inverseLengthSquared = inverseLength * inverseLength;
   forcePerNewton = kSensorDistance * inverseLengthSquared;
   stopX = kStopCos * length;
   stopY = kStopSin * length;
