@@ -441,10 +441,11 @@ void commandServo() {
 struct SerialOut {
   static const uint8_t kSize = 64;  // a power of two; holds kSize - 1
   // Written by put() only (head) and by the interrupt only (tail); the
-  // device simulator (extras/hil) reads them at these places.
+  // device simulator (extras/hil) reads them at these places. All
+  // volatile, so that a byte is in the queue before the head says so.
   volatile uint8_t head;
   volatile uint8_t tail;
-  uint8_t queue[kSize];
+  volatile uint8_t queue[kSize];
 
   static void begin() {  // 115200 baud: UBRR 16 at double speed (2.1 % fast)
     UCSR0A = _BV(U2X0);
