@@ -430,67 +430,8 @@ void commandServo() {
 }
 
 // ---- Serial output, never waiting ----------------------------------------
-// The sketch only sends (115200 baud, 8N1), so on the ATmega328P it drives
-// the UART itself: a 64-byte queue that its "data register empty"
-// interrupt empties. Arduino's Serial would also link its receiving side
-// (a second buffer, an interrupt, read() and peek()): about 800 bytes of
-// flash and 100 of RAM for nothing here. Other boards use Serial.
-// room() is how many bytes put() takes without waiting; lines are
-// queued only when there is room for all of them.
-#if defined(__AVR_ATmega328P__)
-struct SerialOut {
-  static const uint8_t kSize = 64;  // a power of two; holds kSize - 1
-  // Written by put() only (head) and by the interrupt only (tail); the
-  // device simulator (extras/hil) reads them at these places. All
-  // volatile, so that a byte is in the queue before the head says so.
-  volatile uint8_t head;
-  volatile uint8_t tail;
-  volatile uint8_t queue[kSize];
-
-  static void begin() {  // 115200 baud: UBRR 16 at double speed (2.1 % fast)
-    UCSR0A = _BV(U2X0);
-    UBRR0 = 16;
-    UCSR0C = _BV(UCSZ01) | _BV(UCSZ00);  // 8 data bits, no parity, 1 stop
-    UCSR0B = _BV(TXEN0);
-  }
-  uint8_t room() const { return uint8_t(tail - head - 1) & (kSize - 1); }
-  void put(uint8_t c) {
-    while (room() == 0) {  // waits only if the caller did not check room()
-    }
-    queue[head] = c;
-    head = uint8_t(head + 1) & (kSize - 1);
-    UCSR0B |= _BV(UDRIE0);  // (the interrupt may clear it: see there)
-  }
-  void write(uint8_t c) { put(c); }  // for the renderer
-};
-SerialOut serialOut;
-
-ISR(USART_UDRE_vect) {
-  const uint8_t t = serialOut.tail;
-  if (t == serialOut.head) {  // nothing left: until put() sets it again
-    UCSR0B &= uint8_t(~_BV(UDRIE0));
-    return;
-  }
-  UDR0 = serialOut.queue[t];
-  serialOut.tail = uint8_t(t + 1) & (SerialOut::kSize - 1);
-}
-#else
-struct SerialOut {
-#ifdef SERIAL_TX_BUFFER_SIZE
-  static const uint8_t kSize = SERIAL_TX_BUFFER_SIZE;
-#else
-  static const uint8_t kSize = 64;
-#endif
-  static void begin() { Serial.begin(115200); }
-  uint8_t room() const { return uint8_t(Serial.availableForWrite()); }
-  void put(uint8_t c) { Serial.write(c); }
-  void write(uint8_t c) { put(c); }
-};
-SerialOut serialOut;
-#endif
-
-// Lines are put together in a buffer on the stack and queued in one go
-// when the queue has room for the whole line...
+// Lines are put together in a buffer on the stack and written in one go
+// when the transmit buffer has room for the whole line.
 const uint8_t kLineMax = 52;
 
 // ...and only between the servo's pulses. The Servo library starts and ends
@@ -500,7 +441,11 @@ const uint8_t kLineMax = 52;
 // a lever at rest twitches. So a line is queued only after a pulse has
 // ended (the pin is watched at every pass of loop()) and only if it and the
 // bytes already queued leave the UART before the next pulse can begin.
-const int kTxQueueMax = SerialOut::kSize - 1;
+#ifdef SERIAL_TX_BUFFER_SIZE
+const int kTxQueueMax = SERIAL_TX_BUFFER_SIZE - 1;
+#else
+const int kTxQueueMax = 63;
+#endif
 const uint16_t kByteUs = 87;          // 10 bits at 115200 baud
 const uint16_t kServoFrameUs = 20000; // from one pulse's start to the next
 // The quiet time after a pulse's end: the frame less the longest pulse we
@@ -523,15 +468,15 @@ void watchServoPulse() {
   }
 }
 
-// True when a line of n bytes may be queued now: the queue has room for it
-// and one byte more (so that it is never full: the next byte would wait),
+// True when a line of n bytes may be queued now: Serial's transmit buffer
+// has room for it and one byte more (never full: the next byte would wait),
 // and it leaves the UART between two pulses (see above). Without pulses
 // (none yet, or no servo attached) there is nothing to keep clear.
 bool serialQuiet(uint8_t n) {
-  if (serialOut.room() <= n) return false;
+  if (Serial.availableForWrite() <= n) return false;
   if (servoPinState & 1) return false;  // a pulse is on
   if (servoPinState == 0) return true;
-  int bytes = kTxQueueMax - serialOut.room() + n + 1;
+  int bytes = kTxQueueMax - Serial.availableForWrite() + n + 1;
   if (bytes < 0) bytes = 0;
   const uint16_t since = uint16_t(micros()) - pulseEndMicros;
   if (since > 2 * kServoFrameUs) {  // the pulses have stopped
@@ -584,13 +529,13 @@ bool writeStatus() {
     }
   }
   if (!serialQuiet(n)) return false;
-  for (uint8_t i = 0; i < n; ++i) serialOut.put(uint8_t(line[i]));
+  Serial.write(reinterpret_cast<const uint8_t*>(line), n);
   return true;
 }
 
 // ---- Setup and loop ------------------------------------------------------
 void setup() {
-  SerialOut::begin();
+  Serial.begin(115200);
   // The push starts from the sensors as they are (a hand may already be on
   // the lever), not from zero: a push from nothing would kick the weight.
   AnalogInput::begin();
@@ -609,11 +554,7 @@ void setup() {
   prepareStep();
   AnalogInput::start(inputPin());
   if (!kPlotter) {
-    const char* p = reinterpret_cast<const char*>(
-        F("HapticLever: push the lever; turn the dial for its length\r\n"));
-    for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
-      serialOut.put(uint8_t(c));
-    }
+    Serial.print(F("HapticLever: push the lever; turn the dial for its length\r\n"));
   }
 }
 
@@ -645,7 +586,7 @@ void loop() {
   // (!kPlotter: in plotter mode the renderer's code is not linked.)
   if (!kPlotter && output == kFrame) {
     if (serialQuiet(renderer.lineLength()) &&
-        renderer.drawLine(world, serialOut)) {
+        renderer.drawLine(world, Serial)) {
       output = kStatus;
     }
   } else if (writeStatus()) {

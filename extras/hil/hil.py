@@ -759,7 +759,7 @@ def loop_rows(devs):
     per = full / max(d["seconds"] for d in devs)
     row("5 loop: serial never blocks", "all runs",
         "transmit buffer full for %.1f ms per run (%.1f %% of the time)" % (1000 * full, 100 * per)
-        if all(d["serial_layout_ok"] == 1 for d in devs) else "transmit queue not recognised",
+        if all(d["serial_layout_ok"] == 1 for d in devs) else "Serial layout not recognised",
         "never full", full == 0)
 
 
@@ -954,8 +954,7 @@ def quick(sim, builds):
     check(45 <= dev["pulses"] <= 51, "servo pulses at 50 Hz", "%d accepted in 1 s (45..51)" % dev["pulses"])
     check(dev["passes"] > 100 and dev["steps"] > 100, "loop passes and physics steps are counted",
           "%d passes, %d steps" % (dev["passes"], dev["steps"]))
-    check(dev["serial_layout_ok"] == 1, "the sketch's transmit queue is found in memory",
-          "serialOut: the bytes queued match the bytes the UART sent")
+    check(dev["serial_layout_ok"] == 1, "Serial's transmit buffer is found in memory", "UCSR0A/UDR0 pointers")
 
     # --servo-phase moves every frame of the servo by that much and nothing else.
     shifted = run_device(sim, elf, "quick_phase", 0.23, 0.3, phase=7)

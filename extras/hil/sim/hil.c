@@ -39,11 +39,12 @@
 #define TIMING_STEPS_PER_SECOND 6
 #define TIMING_STEPS 23
 #define TIMING_SLIPPED 27
-// The sketch's transmit queue (serialOut, the sketch's SerialOut): head
-// (written by the sketch), tail (by its interrupt), then 64 bytes.
-#define SERIAL_TX_HEAD 0
-#define SERIAL_TX_TAIL 1
-#define SERIAL_TX_SIZE 64
+// HardwareSerial of the Debian Arduino core 1.8.7: Stream (12 bytes), six
+// register pointers (UCSR0A at 16, UDR0 at 22), then _written, rx head and
+// tail, tx head and tail.
+#define SERIAL_UCSRA_PTR 16
+#define SERIAL_UDR_PTR 22
+#define SERIAL_TX_HEAD 27
 
 // The virtual lever and the push as the firmware holds them.
 typedef struct {
@@ -86,7 +87,6 @@ typedef struct {
   uint64_t worst_pass, worst_pass_isr, worst_no_isr, pass_sum;
   uint64_t worst_quiet;  // worst pass that queued nothing for Serial
   uint8_t last_tx_head;
-  long tx_queued;  // bytes the sketch queued, from the head's moves
   long worst_pass_steps;
   long max_steps_per_pass, passes_no_step;
   uint64_t first_edge;
@@ -215,9 +215,8 @@ static void on_profile_pin(avr_irq_t* irq, uint32_t value, void* param) {
     // Bytes the pass queued for Serial (its transmit head moved on).
     const uint8_t head =
         sim.serial_ok ? sim.avr->data[sim.a_serial + SERIAL_TX_HEAD] : 0;
-    const int queued = (head - sim.last_tx_head) & (SERIAL_TX_SIZE - 1);
+    const int queued = (head - sim.last_tx_head) & 63;
     sim.last_tx_head = head;
-    sim.tx_queued += queued;
     if (queued == 0 && cycles > sim.worst_quiet) sim.worst_quiet = cycles;
     if (sim.passes_csv) {
       fprintf(sim.passes_csv, "%.6f,%llu,%llu,%ld,%d\n", now / F_CPU_HZ,
@@ -225,15 +224,13 @@ static void on_profile_pin(avr_irq_t* irq, uint32_t value, void* param) {
     }
   } else {
     sim.first_edge = now;
-    // setup() has run: its greeting (under 64 bytes, from an empty queue)
-    // moved the head from 0. The layout is confirmed at the end, when the
-    // bytes queued must match the bytes the UART sent (see there).
+    // Serial's constructor has run: check that the layout is the one
+    // assumed (pointers to UCSR0A, 0xC0, and UDR0, 0xC6).
     if (sim.a_serial) {
       const uint8_t* d = sim.avr->data + sim.a_serial;
-      sim.serial_ok = d[SERIAL_TX_HEAD] < SERIAL_TX_SIZE &&
-                      d[SERIAL_TX_TAIL] < SERIAL_TX_SIZE;
+      sim.serial_ok = (d[SERIAL_UCSRA_PTR] | d[SERIAL_UCSRA_PTR + 1] << 8) == 0xC0 &&
+                      (d[SERIAL_UDR_PTR] | d[SERIAL_UDR_PTR + 1] << 8) == 0xC6;
       sim.last_tx_head = d[SERIAL_TX_HEAD];
-      sim.tx_queued = d[SERIAL_TX_HEAD];
     }
   }
   // No store of the firmware is under way at the top of loop() (no
@@ -286,8 +283,8 @@ static avr_cycle_count_t model_step(avr_t* avr, avr_cycle_count_t when,
   // full means the next write() would wait for the line.
   if (sim.serial_ok) {
     const uint8_t head = avr->data[sim.a_serial + SERIAL_TX_HEAD];
-    const uint8_t tail = avr->data[sim.a_serial + SERIAL_TX_TAIL];
-    if (((head + 1) & (SERIAL_TX_SIZE - 1)) == tail) sim.tx_full_steps++;
+    const uint8_t tail = avr->data[sim.a_serial + SERIAL_TX_HEAD + 1];
+    if (((head + 1) & 63) == tail) sim.tx_full_steps++;
   }
   if (sim.dev.stalled) sim.stalled_steps++;
   if (fabs(sim.dev.hand_N) > sim.max_abs_hand_N)
@@ -447,7 +444,7 @@ static int cmd_run(int argc, char** argv) {
     return 3;
   }
 
-  sim.a_serial = find_symbol(&fw, "serialOut");
+  sim.a_serial = find_symbol(&fw, "Serial");
 
   // UART: capture, no console printing, no sleeping on polls.
   uint32_t flags = 0;
@@ -516,12 +513,6 @@ static int cmd_run(int argc, char** argv) {
   Virtual v;
   memset(&v, 0, sizeof v);
   read_virtual(&v);
-  // Every byte queued has been sent but for those still in the queue (at
-  // most 63) and the one in the UART.
-  if (sim.serial_ok) {
-    const long unsent = sim.tx_queued - sim.uart_bytes;
-    sim.serial_ok = unsent >= 0 && unsent <= SERIAL_TX_SIZE;
-  }
   printf("result serial_layout_ok=%d\n", sim.serial_ok);
   printf("result serial_tx_full_s=%.6f\n",
          sim.tx_full_steps * (MODEL_CYCLES / F_CPU_HZ));
