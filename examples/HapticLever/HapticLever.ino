@@ -74,6 +74,14 @@ constexpr S negative(S constant) { return S::fromRaw(-constant.raw()); }
 // a * n without rounding (the product of a value and a whole number is
 // exact in fixed point): for |a * n| well inside Q16.16's range, as here.
 inline S timesWhole(S a, int16_t n) { return S::fromRaw(a.raw() * n); }
+// The sketch divides with whole numbers only, whose division the Arduino
+// core links anyway (micros()): no fixed-point division is linked for it.
+// 1 / a for a > 1/65536, rounded as S's own division rounds it: the raw
+// (2^32 + a/2) / a, as 1 + (2^32 + a/2 - a) / a, which fits 32 bits.
+inline S reciprocal(S a) {
+  const uint32_t r = uint32_t(a.raw());
+  return S::fromRaw(long((0UL - (r - r / 2)) / r + 1));
+}
 
 // ---- Wiring (extras/doc/wiring.md) ---------------------------------------
 const uint8_t kFsrDownPin = A0;     // squeezed when the user pushes down
@@ -127,14 +135,22 @@ S fsrNewtons(int reading) {
 }
 #else
 const int kFsrLimit = 960;  // the fitted curve has a pole near 990
+// newtons = x * 0.00981 / denominator in one division of whole numbers
+// (see reciprocal()): x * 0.00981 N/g in units of 2^-28 (at most 2.6e9)
+// over the denominator (0.50 to 4.6) in units of 2^-14 is newtons in units
+// of 2^-14, within 2.5e-4 of the curve (the fixed-point quotient: 2e-4).
+// It runs for every reading: a second division for the last two bits
+// would take the loop's spare time that the frames need.
+const uint32_t kNewtonsPerGram28 = 2633365;  // round(0.00981 * 2^28)
 S fsrNewtons(int reading) {
   if (reading <= 0) return S();
   if (reading > kFsrLimit) reading = kFsrLimit;
-  const S x(reading);
   const S u = S::fromRaw(long(reading) * 64);  // x / 1024, exactly
   const S denominator =
       (S(-13.664495) * u + S(10.894753)) * u + S(2.30339406);
-  return x / denominator * S(0.00981);
+  const uint32_t d = (uint32_t(denominator.raw()) + 2) >> 2;
+  const uint32_t n = uint32_t(reading) * kNewtonsPerGram28;
+  return S::fromRaw(long((n + d / 2) / d) * 4);
 }
 #endif
 
@@ -146,7 +162,7 @@ const S kLengthSpan(0.25 / 1023);   // m per dial step: 0.48 m at 1023
 const S kStopCos(0.843391);
 const S kStopSin(0.537300);
 const S kRangeRadians(0.567232);
-const S kEndBounce(0.5);            // restitution at the range ends
+// Restitution at the range ends: 1/2 (rangeEnds() halves the speed).
 // Slower than this (m/s) into a range end, the end rests on it: about what
 // gravity adds in two steps.
 const S kRestingSpeed(0.02);
@@ -196,6 +212,7 @@ const double kPushLead = 0.0175;  // s
 typedef World<S, 2, 2, 2, 1, 0> HapticWorld;
 HapticWorld world;
 LeverScene lever;
+HapticWorld::ParticleType* leverEnd;  // the end, looked up once in setup()
 Vec2<S> userForce;  // N, read by the custom force generator every step
 
 // 1,024 steps a second: timing is the one place that sets the step.
@@ -212,7 +229,8 @@ Servo leverServo;
 // start() begins a conversion, ready() says when it is done (13 ADC clocks,
 // 104 us on a 16 MHz Nano), value() gives it. On the ATmega328P this is the
 // ADC's registers; on other boards it falls back to analogRead(), which
-// waits.
+// waits, and its reading is ready a conversion's time later, so that the
+// loop's other work (the serial output) still gets passes of its own.
 #if defined(__AVR_ATmega328P__)
 struct AnalogInput {
   static void begin() {  // AVcc reference, clock / 128 (125 kHz)
@@ -228,12 +246,19 @@ struct AnalogInput {
 #else
 struct AnalogInput {
   static int last;
+  static uint16_t startMicros;
   static void begin() {}
-  static void start(uint8_t pin) { last = analogRead(pin); }
-  static bool ready() { return true; }
+  static void start(uint8_t pin) {
+    last = analogRead(pin);
+    startMicros = uint16_t(micros());
+  }
+  static bool ready() {
+    return uint16_t(uint16_t(micros()) - startMicros) >= 104;
+  }
   static int value() { return last; }
 };
 int AnalogInput::last = 0;
+uint16_t AnalogInput::startMicros = 0;
 #endif
 
 // A conversion waited for, in setup() only (the same conversion as
@@ -268,11 +293,10 @@ void setLeverLength(int reading) {
   const S length = kShortest + timesWhole(kLengthSpan, reading);
   world.setLength(lever.rod, length);
   leverLength = length;
-  inverseLengthSquared = S(1) / (length * length);
-  // Its own quotient: L x (1 / L^2) would carry the error of L^2, which
-  // Q16.16 holds to 1e-4 of itself at 0.23 m (the angle at the stops then
-  // printed as 32.49 deg).
-  inverseLength = S(1) / length;
+  // 1 / L as a quotient and 1 / L^2 as its square: Q16.16 holds L^2 only to
+  // 1.4e-4 of itself at 0.23 m, and 1 / L to 2e-6.
+  inverseLength = reciprocal(length);
+  inverseLengthSquared = inverseLength * inverseLength;
   forcePerNewton = kSensorDistance * inverseLengthSquared;
   stopX = kStopCos * length;
   stopY = kStopSin * length;
@@ -300,33 +324,43 @@ bool serviceInputs() {
 // Above or below either end (the rod at +-32.5 degrees: the end's height
 // beyond +-stopY), the lever's end is put back on it and, if it is still
 // moving out, sent back with half its speed, or stopped when it is slower
-// than kRestingSpeed. u is the range end's direction (unit); the angle
-// grows along t = (-u.y, u.x).
+// than kRestingSpeed. The lower end is handled as the upper one mirrored
+// (y and its velocity negated; positions and speeds are far from the
+// range of S, so negating their raw values is safe); there the range end's
+// direction is u = (cos, sin) and the lever leaves the range along
+// t = (-sin, cos).
 const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
+inline S mirrored(S value, bool lower) {
+  return lower ? S::fromRaw(-value.raw()) : value;
+}
+
 void rangeEnds() {
-  HapticWorld::ParticleType* end = world.particle(lever.end);
-  Vec2<S>& x = end->position;
-  Vec2<S>& v = end->velocity;
-  const S lowerStopY = S::fromRaw(-stopY.raw());
-  const bool lower = x.y < lowerStopY;
-  if (!lower && !(x.y > stopY)) return;
+  Vec2<S>& x = leverEnd->position;
+  Vec2<S>& v = leverEnd->velocity;
+  const bool lower = x.y < S();
+  if (!(mirrored(x.y, lower) > stopY)) return;
   x.x = stopX;
-  x.y = lower ? lowerStopY : stopY;
-  const S tx = lower ? kStopSin : negative(kStopSin);
-  const S speed = v.x * tx + v.y * kStopCos;  // along t
-  if (lower ? speed >= S() : speed <= S()) return;  // not moving out
+  x.y = mirrored(stopY, lower);
+  const S out = kStopCos * mirrored(v.y, lower) - kStopSin * v.x;  // along t
+  if (!(out > S())) return;  // not moving out
   S back = S();
-  if (speed > kRestingSpeed || speed < negative(kRestingSpeed)) {
-    back = -(speed * kEndBounce);
+  if (out > kRestingSpeed) {
+    back = S::fromRaw(-((out.raw() + 1) >> 1));  // -out / 2, rounded as S
     // The servo takes a new angle only every 20 ms: after a bounce it is
     // kept at the range end for a little longer than that, or the
     // prediction turns it back before the felt lever has reached the end.
     stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
   }
-  v.x = tx * back;
-  v.y = kStopCos * back;
+  v.x = negative(kStopSin) * back;
+  v.y = mirrored(kStopCos * back, lower);
+}
+
+// x / 2^k rounded down, as an arithmetic shift gives it, without shifting
+// a negative number.
+inline int32_t floorShift(int32_t x, uint8_t k) {
+  return x >= 0 ? x >> k : -(-(x + 1) >> k) - 1;
 }
 
 // ---- Between steps --------------------------------------------------------
@@ -338,15 +372,17 @@ void rangeEnds() {
 // pushing the physical end down lifts the virtual end).
 void prepareStep() {
   rangeEnds();
-  // Averages with weights 1/4 and 1/8 per step, as shifts.
-  const S change = S::fromRaw((downNewtons - upNewtons - push).raw() >> 2);
+  // Averages with weights 1/4 and 1/8 per step, as shifts. (Each FSR reads
+  // under 19 N, so |change| < 10 N: its raw value times 1,024 fits.)
+  const S change =
+      S::fromRaw(floorShift((downNewtons - upNewtons - push).raw(), 2));
   push += change;
-  pushRate += S::fromRaw(
-      (change.raw() * long(timing.stepsPerSecond()) - pushRate.raw()) >> 3);
+  pushRate += S::fromRaw(floorShift(
+      change.raw() * long(timing.stepsPerSecond()) - pushRate.raw(), 3));
   S felt = push + pushRate * kForceLead;
   if (felt > kPushLimit) felt = kPushLimit;
   if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
-  const Vec2<S>& end = world.particle(lever.end)->position;
+  const Vec2<S>& end = leverEnd->position;
   forceScale = felt * forcePerNewton;
   userForce.x = -end.y * forceScale;
   userForce.y = end.x * forceScale;
@@ -357,7 +393,7 @@ void prepareStep() {
 // is within 3.4e-5 rad of it (0.02 us of servo command), as close as
 // atan2(), without its code and table.
 S leverRadians() {
-  const S s = world.particle(lever.end)->position.y * inverseLength;
+  const S s = leverEnd->position.y * inverseLength;
   const S s2 = s * s;
   return s + s * s2 * (S(0.163293) + S(0.103055) * s2);
 }
@@ -366,7 +402,7 @@ S leverRadians() {
 // angular velocity and acceleration (a second-order prediction), which
 // makes up for most of the servo's delay.
 void commandServo() {
-  const HapticWorld::ParticleType* end = world.particle(lever.end);
+  const HapticWorld::ParticleType* end = leverEnd;
   const Vec2<S>& x = end->position;
   const S turnRate =
       (x.x * end->velocity.y - x.y * end->velocity.x) * inverseLengthSquared;
@@ -382,12 +418,15 @@ void commandServo() {
     angle = stopHold < 0 ? negative(kRangeRadians) : kRangeRadians;
     stopHold += stopHold < 0 ? 1 : -1;
   }
-  int32_t offset = ((angle * kServoUsPerRadian).raw() + 0x8000L) >> 16;
   // Never past the range ends (the prediction overshoots them at a bounce).
-  if (offset > kServoRangeUs) offset = kServoRangeUs;
-  if (offset < -kServoRangeUs) offset = -kServoRangeUs;
-  leverServo.writeMicroseconds(kServoLevelUs +
-                               kServoDirection * int(offset));
+  S offset = angle * kServoUsPerRadian;
+  if (offset > S(kServoRangeUs)) offset = S(kServoRangeUs);
+  if (offset < S(-kServoRangeUs)) offset = S(-kServoRangeUs);
+  // Rounded to whole microseconds (halves up), shifted by 512 us so that
+  // no negative number is shifted.
+  const int us =
+      int(uint32_t(offset.raw() + 0x8000L + (512L << 16)) >> 16) - 512;
+  leverServo.writeMicroseconds(kServoLevelUs + kServoDirection * us);
 }
 
 // ---- Serial output, never waiting ----------------------------------------
@@ -429,9 +468,12 @@ void watchServoPulse() {
   }
 }
 
-// True when a line of n bytes may be queued now (see above). Without pulses
+// True when a line of n bytes may be queued now: Serial's transmit buffer
+// has room for it and one byte more (never full: the next byte would wait),
+// and it leaves the UART between two pulses (see above). Without pulses
 // (none yet, or no servo attached) there is nothing to keep clear.
 bool serialQuiet(uint8_t n) {
+  if (Serial.availableForWrite() <= n) return false;
   if (servoPinState & 1) return false;  // a pulse is on
   if (servoPinState == 0) return true;
   int bytes = kTxQueueMax - Serial.availableForWrite() + n + 1;
@@ -444,23 +486,16 @@ bool serialQuiet(uint8_t n) {
   return since <= kQuietUs && uint16_t(bytes) * kByteUs <= kQuietUs - since;
 }
 
-uint8_t appendText(char* line, uint8_t n, const __FlashStringHelper* text) {
-  const char* p = reinterpret_cast<const char*>(text);
-  for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
-    line[n++] = c;
-  }
-  return n;
-}
-
-// A value with two decimals.
+// A value with two decimals (magnitudes up to 655.35).
 uint8_t appendHundredths(char* line, uint8_t n, S value) {
-  int32_t hundredths = ((value * S(100)).raw() + 0x8000L) >> 16;
-  if (hundredths < 0) {
+  uint32_t magnitude = uint32_t(value.raw());
+  if (value < S()) {
     line[n++] = '-';
-    hundredths = -hundredths;
+    magnitude = 0UL - magnitude;
   }
+  if (magnitude > 65535UL * 655) magnitude = 65535UL * 655;
   // 16-bit digits are several times faster than 32-bit ones on the AVR.
-  uint16_t h = hundredths > 65535L ? 65535u : uint16_t(hundredths);
+  uint16_t h = uint16_t((magnitude * 100 + 0x8000UL) >> 16);
   char digits[6];
   uint8_t count = 0;
   do {
@@ -475,29 +510,25 @@ uint8_t appendHundredths(char* line, uint8_t n, S value) {
 }
 
 // The status line (or the plotter's line); false if there is no room yet.
+// Each '#' of the text is a value, in the order of the list.
+const char kStatusText[] PROGMEM =
+    "angle # deg  push # N  length # m\r\n";
+const char kPlotterText[] PROGMEM = "angle:# force:# length:#\r\n";
+
 bool writeStatus() {
+  const S values[] = {leverRadians() * S(57.29578), push, leverLength};
   char line[kLineMax];
-  const S degrees = leverRadians() * S(57.29578);
   uint8_t n = 0;
-  if (kPlotter) {
-    n = appendText(line, n, F("angle:"));
-    n = appendHundredths(line, n, degrees);
-    n = appendText(line, n, F(" force:"));
-    n = appendHundredths(line, n, push);
-    n = appendText(line, n, F(" length:"));
-    n = appendHundredths(line, n, leverLength);
-  } else {
-    n = appendText(line, n, F("angle "));
-    n = appendHundredths(line, n, degrees);
-    n = appendText(line, n, F(" deg  push "));
-    n = appendHundredths(line, n, push);
-    n = appendText(line, n, F(" N  length "));
-    n = appendHundredths(line, n, leverLength);
-    n = appendText(line, n, F(" m"));
+  uint8_t k = 0;
+  const char* p = kPlotter ? kPlotterText : kStatusText;
+  for (char c = pgm_read_byte(p); c != 0; c = pgm_read_byte(++p)) {
+    if (c == '#') {
+      n = appendHundredths(line, n, values[k++]);
+    } else {
+      line[n++] = c;
+    }
   }
-  line[n++] = '\r';
-  line[n++] = '\n';
-  if (Serial.availableForWrite() < n || !serialQuiet(n)) return false;
+  if (!serialQuiet(n)) return false;
   Serial.write(reinterpret_cast<const uint8_t*>(line), n);
   return true;
 }
@@ -516,6 +547,7 @@ void setup() {
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
   lever = buildLever(world, &userForce, kShortest);
+  leverEnd = world.particle(lever.end);
   setLeverLength(readAnalogNow(kLengthDialPin));
   // The first step needs the push as a force too (later steps get it from
   // the pass before them), or gravity alone acts for that step.
@@ -553,8 +585,7 @@ void loop() {
   if (output == kIdle || timing.microsToNextStep() < 100) return;
   // (!kPlotter: in plotter mode the renderer's code is not linked.)
   if (!kPlotter && output == kFrame) {
-    if (Serial.availableForWrite() >= renderer.lineLength() &&
-        serialQuiet(renderer.lineLength()) &&
+    if (serialQuiet(renderer.lineLength()) &&
         renderer.drawLine(world, Serial)) {
       output = kStatus;
     }
