@@ -1,0 +1,111 @@
+// Reciprocals, square roots and unit vectors from multiplies only.
+//
+// A scene whose step never divides should not link the divide and the
+// square root (about 1.7 KB of code and tables in Q16.16) for work done at
+// set-up or on a rare path: a rod's 1 / L and first direction, the exact
+// length of a rod that turned fast, a direction renormalised after a fast
+// turn. These take Newton's iterations from a first guess instead:
+// - the argument is brought into [1/2, 2) by powers of 4 (exact upwards;
+//   downwards, in fixed point, each halving rounds);
+// - a straight line gives the first guess of 1 / sqrt(q), within 9 %;
+// - each Newton step squares the relative error: four leave less than
+//   2e-15 before rounding, below a float's half unit.
+// In Q16.16 the inverse square root is within 5 units of 2^-16 relative
+// plus one unit, the reciprocal (its square) within 10 relative plus one
+// (extras/test/NewtonTest checks these on every leading-bit position).
+// Slower than the divide and the square root (about 15 multiplies): for
+// set-up and rare paths, not for every step.
+#pragma once
+
+#include <stdint.h>
+
+#include "Fixed.hpp"
+#include "Float.hpp"
+#include "Scaler.hpp"
+#include "Vec.hpp"
+#include "Zero.hpp"
+
+namespace tinyparticle {
+namespace detail {
+
+// 1 / sqrt(q) for q > 0 (q <= 0 gives 0). q is brought into [1/2, 2) by
+// factors of 4 (exact upwards; downwards, in fixed point, the halvings
+// round), then a straight line, within 9 %, and four Newton steps, each
+// squaring the relative error: less than 2e-15 before rounding. The root
+// is scaled back by the same powers of 2. Fixed point: a result beyond the
+// format saturates and raises MathError::kOverflow.
+template <typename S>
+TINYPARTICLE_NOINLINE S inverseSqrt(S q) {
+  if (!isPositive(q)) return S();
+  int8_t doublings = 0;  // 1 / sqrt(q) = 2^doublings / sqrt(q')
+  while (q < S(0.5)) {
+    q += q;
+    q += q;
+    ++doublings;
+  }
+  while (!(q < S(2))) {
+    q = half(half(q));
+    --doublings;
+  }
+  S y = S(1.5) - S(0.4375) * q;
+  for (uint8_t i = 0; i < 4; ++i) y = y * (S(1.5) - half(q * y * y));
+  for (; doublings > 0; --doublings) y += y;
+  for (; doublings < 0; ++doublings) y = half(y);
+  return y;
+}
+
+// 1 / x for x > 0, as (1 / sqrt(x))^2 (x <= 0 gives 0): within about
+// 2^-15 of x's inverse, relatively.
+template <typename S>
+inline S reciprocal(S x) {
+  const S y = inverseSqrt(x);
+  return y * y;
+}
+
+// v scaled to unit length; false (v unchanged) for a zero vector. The
+// largest component is first brought into [1/2, 1) by powers of two, so
+// that short vectors keep their bits and long ones cannot overflow.
+template <typename S, uint8_t N>
+TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<S, N>& v) {
+  S largest = S();
+  for (uint8_t i = 0; i < N; ++i) largest = fmax(largest, fabs(v[i]));
+  if (isZero(largest)) return false;
+  while (largest < S(0.5)) {
+    largest += largest;
+    v += v;
+  }
+  while (!(largest < S(1))) {
+    largest = half(largest);
+    v *= S(0.5);
+  }
+  v *= inverseSqrt(v.magnitudeSquared());
+  return true;
+}
+
+// 2 / (1 + sqrt(1 - 2h)) for h >= 0: what a rod that turns by t = sqrt(2h)
+// radians in a step drops along itself, in units of the second order
+// form's t^2 / 2 (Contacts/RodSolver.hpp, positionSpeed()). Up to h = 1/32
+// (a turn of 1/4 rad) its series 1 + h/2 + h^2/2 + 5h^3/8 + 7h^4/8 +
+// 21h^5/16 + ... (Catalan numbers over powers of 2), cut after h^4, is off
+// by less than 4e-8. Beyond, Newton's iterations (rare: a whip), with
+// sqrt(m) = m / sqrt(m) and 1 / t = 1 / sqrt(t^2). From h = 1/2 (a turn
+// of 1 rad) the rod cannot reach its length in the step: the square root
+// is taken as 0, and the factor is 2.
+template <typename S>
+S turnDropFactor(S h) {
+  if (!(h > S(1.0 / 32))) {
+    S p = S(0.875);
+    p = S(0.625) + h * p;
+    p = S(0.5) + h * p;
+    p = S(0.5) + h * p;
+    return S(1) + h * p;
+  }
+  if (!(h < S(0.5))) return S(2);
+  const S m = S(1) - (h + h);
+  const S t = S(1) + m * inverseSqrt(m);
+  const S r = inverseSqrt(t * t);
+  return r + r;
+}
+
+}  // namespace detail
+}  // namespace tinyparticle
