@@ -54,6 +54,13 @@ TINYPARTICLE_NOINLINE S inverseSqrt(S q) {
   return y;
 }
 
+// A float has a compact divide and square root, and a world that steps
+// divides already (1 / dt): for Float the functions here are the plain
+// formulas, as Newton's steps would only add code.
+inline Float inverseSqrt(Float q) {
+  return isPositive(q) ? Float(1) / sqrt(q) : Float();
+}
+
 // 1 / x for x > 0, as (1 / sqrt(x))^2 (x <= 0 gives 0): within about
 // 2^-15 of x's inverse, relatively.
 template <typename S>
@@ -82,6 +89,11 @@ TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<S, N>& v) {
   return true;
 }
 
+template <uint8_t N>
+inline bool normalizeByMultiplies(Vec<Float, N>& v) {
+  return v.normalize();
+}
+
 // 2 / (1 + sqrt(1 - 2h)) for h >= 0: what a rod that turns by t = sqrt(2h)
 // radians in a step drops along itself, in units of the second order
 // form's t^2 / 2 (Contacts/RodSolver.hpp, positionSpeed()). Up to h = 1/32
@@ -105,6 +117,10 @@ S turnDropFactor(S h) {
   const S t = S(1) + m * inverseSqrt(m);
   const S r = inverseSqrt(t * t);
   return r + r;
+}
+inline Float turnDropFactor(Float h) {
+  if (!(h < Float(0.5))) return Float(2);
+  return Float(2) / (Float(1) + sqrt(Float(1) - (h + h)));
 }
 
 }  // namespace detail
