@@ -1,4 +1,4 @@
-// Reciprocals, square roots and unit vectors from multiplies only.
+// Reciprocals, square roots and unit vectors from multiplies only (Fixed).
 //
 // A scene whose step never divides should not link the divide and the
 // square root (about 1.7 KB of code and tables in Q16.16) for work done at
@@ -28,25 +28,25 @@
 namespace tinyparticle {
 namespace detail {
 
-// How many Newton steps the inverse square root takes: from 9 %, two
-// leave 1.6e-4 (enough for 10 fraction bits), three 3.9e-8 (24 bits).
-template <typename S>
-struct NewtonSteps {
-  static const uint8_t kCount = 4;
-};
-template <uint8_t I, uint8_t F>
-struct NewtonSteps<Fixed<I, F> > {
-  static const uint8_t kCount = F <= 10 ? 2 : (F <= 24 ? 3 : 4);
-};
+// Other scalars (Float, a host's double) have a compact divide and square
+// root, and a world that steps divides already (1 / dt): for them the
+// functions below are the plain formulas; Newton's steps are for Fixed.
 
-// 1 / sqrt(q) for q > 0 (q <= 0 gives 0). q is brought into [1/2, 2) by
-// factors of 4 (exact upwards; downwards, in fixed point, the halvings
-// round), then a straight line, within 9 %, and four Newton steps, each
-// squaring the relative error: less than 2e-15 before rounding. The root
-// is scaled back by the same powers of 2. Fixed point: a result beyond the
-// format saturates and raises MathError::kOverflow.
+// 1 / sqrt(q) for q > 0 (q <= 0 gives 0).
 template <typename S>
-TINYPARTICLE_NOINLINE S inverseSqrt(S q) {
+inline S inverseSqrt(S q) {
+  return isPositive(q) ? S(1) / sqrt(q) : S();
+}
+// Fixed: q is brought into [1/2, 2) by factors of 4 (exact upwards;
+// downwards the halvings round), then a straight line, within 9 %, and
+// Newton's steps, each squaring the relative error: two leave 1.6e-4
+// (enough for 10 fraction bits), three 3.9e-8 (24 bits). The root is
+// scaled back by the same powers of 2; a result beyond the format
+// saturates and raises MathError::kOverflow.
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrt(Fixed<I, F> q) {
+  typedef Fixed<I, F> S;
+  const uint8_t kSteps = F <= 10 ? 2 : (F <= 24 ? 3 : 4);
   if (!isPositive(q)) return S();
   int8_t doublings = 0;  // 1 / sqrt(q) = 2^doublings / sqrt(q')
   while (q < S(0.5)) {
@@ -59,27 +59,23 @@ TINYPARTICLE_NOINLINE S inverseSqrt(S q) {
     --doublings;
   }
   S y = S(1.5) - S(0.4375) * q;
-  for (uint8_t i = 0; i < NewtonSteps<S>::kCount; ++i) {
-    y = y * (S(1.5) - half(q * y * y));
-  }
+  for (uint8_t i = 0; i < kSteps; ++i) y = y * (S(1.5) - half(q * y * y));
   for (; doublings > 0; --doublings) y += y;
   for (; doublings < 0; ++doublings) y = half(y);
   return y;
 }
 
-// A float has a compact divide and square root, and a world that steps
-// divides already (1 / dt): for Float the functions here are the plain
-// formulas, as Newton's steps would only add code.
-inline Float inverseSqrt(Float q) {
-  return isPositive(q) ? Float(1) / sqrt(q) : Float();
+// 1 / x for x > 0: the divide.
+template <typename S>
+inline S reciprocal(S x) {
+  return S(1) / x;
 }
-
-// 1 / x for x > 0 (x <= 0 gives 0). Fixed point: exactly the divide's
-// 1 / x (rounded to nearest, ties away; beyond the format it saturates
-// and raises MathError::kOverflow), from a long division one bit at a
-// time: a few dozen bytes, about a thousand cycles on AVR. (A rod's 1 / L
-// must be exact: a short Q16.16 pendulum's energy error grew from 0.6 %
-// to 1.4 % with a reciprocal a few units off.)
+// Fixed (x <= 0 gives 0): exactly the divide's 1 / x (rounded to nearest, ties away;
+// beyond the format it saturates and raises MathError::kOverflow), from a
+// long division one bit at a time: a few dozen bytes, about a thousand
+// cycles on AVR. (A rod's 1 / L must be exact: a short Q16.16 pendulum's
+// energy error grew from 0.6 % to 1.4 % with a reciprocal a few units
+// off.)
 template <uint8_t I, uint8_t F>
 TINYPARTICLE_NOINLINE Fixed<I, F> reciprocal(Fixed<I, F> x) {
   typedef Fixed<I, F> T;
@@ -103,15 +99,18 @@ TINYPARTICLE_NOINLINE Fixed<I, F> reciprocal(Fixed<I, F> x) {
   if (q >= top) return T::fromRaw(T::overflow(false));
   return T::fromRaw(typename T::Raw(q));
 }
-inline Float reciprocal(Float x) {
-  return isPositive(x) ? Float(1) / x : Float();
-}
 
-// v scaled to unit length; false (v unchanged) for a zero vector. The
-// largest component is first brought into [1/2, 1) by powers of two, so
-// that short vectors keep their bits and long ones cannot overflow.
+// v scaled to unit length; false (v unchanged) for a zero vector.
 template <typename S, uint8_t N>
-TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<S, N>& v) {
+inline bool normalizeByMultiplies(Vec<S, N>& v) {
+  return v.normalize();
+}
+// Fixed: the largest component is first brought into [1/2, 1) by powers
+// of two, so that short vectors keep their bits and long ones cannot
+// overflow; then v / |v| = v (1 / sqrt(|v|^2)).
+template <uint8_t I, uint8_t F, uint8_t N>
+TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Fixed<I, F>, N>& v) {
+  typedef Fixed<I, F> S;
   S largest = S();
   for (uint8_t i = 0; i < N; ++i) largest = fmax(largest, fabs(v[i]));
   if (isZero(largest)) return false;
@@ -127,22 +126,23 @@ TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<S, N>& v) {
   return true;
 }
 
-template <uint8_t N>
-inline bool normalizeByMultiplies(Vec<Float, N>& v) {
-  return v.normalize();
-}
-
 // 2 / (1 + sqrt(1 - 2h)) for h >= 0: what a rod that turns by t = sqrt(2h)
 // radians in a step drops along itself, in units of the second order
-// form's t^2 / 2 (Contacts/RodSolver.hpp, positionSpeed()). Up to h = 1/32
-// (a turn of 1/4 rad) its series 1 + h/2 + h^2/2 + 5h^3/8 + 7h^4/8 +
-// 21h^5/16 + ... (Catalan numbers over powers of 2), cut after h^4, is off
-// by less than 4e-8. Beyond, Newton's iterations (rare: a whip), with
-// sqrt(m) = m / sqrt(m) and 1 / t = 1 / sqrt(t^2). From h = 1/2 (a turn
-// of 1 rad) the rod cannot reach its length in the step: the square root
-// is taken as 0, and the factor is 2.
+// form's t^2 / 2 (Contacts/RodSolver.hpp, positionSpeed()). From h = 1/2
+// (a turn of 1 rad) the rod cannot reach its length in the step: the
+// square root is taken as 0, and the factor is 2.
 template <typename S>
-S turnDropFactor(S h) {
+inline S turnDropFactor(S h) {
+  if (!(h < S(0.5))) return S(2);
+  return S(2) / (S(1) + sqrt(S(1) - (h + h)));
+}
+// Fixed: up to h = 1/32 (a turn of 1/4 rad) the series 1 + h/2 + h^2/2 +
+// 5h^3/8 + 7h^4/8 + 21h^5/16 + ... (Catalan numbers over powers of 2),
+// cut after h^4, off by less than 4e-8; beyond, Newton's steps (rare: a
+// whip), with sqrt(m) = m / sqrt(m) and 1 / t = 1 / sqrt(t^2).
+template <uint8_t I, uint8_t F>
+Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
+  typedef Fixed<I, F> S;
   if (!(h > S(1.0 / 32))) {
     S p = S(0.875);
     p = S(0.625) + h * p;
@@ -155,10 +155,6 @@ S turnDropFactor(S h) {
   const S t = S(1) + m * inverseSqrt(m);
   const S r = inverseSqrt(t * t);
   return r + r;
-}
-inline Float turnDropFactor(Float h) {
-  if (!(h < Float(0.5))) return Float(2);
-  return Float(2) / (Float(1) + sqrt(Float(1) - (h + h)));
 }
 
 }  // namespace detail
