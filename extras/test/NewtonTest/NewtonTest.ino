@@ -15,7 +15,8 @@
 // A unit vector: each component within 3 units (the inverse square root's
 // relative error on components below 1, plus the product's rounding). The
 // turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or two
-// inverse square roots on arguments near 1). Float: 4 units of 2^-24
+// inverse square roots on arguments near 1); the same in units of 2^-8
+// for Q24.8. Float (the plain formulas): 4 units of 2^-24
 // relative for the inverse square root, 8 for the turn factor.
 #include <AUnit.h>
 #include <TinyParticle.h>
@@ -161,6 +162,34 @@ test(turnFactorOnBothSidesOfItsLimits) {
     }
   }
   for (Raw h = 0; h < 40000; h += 97) checkTurn(h);
+  assertEqual(gFailures, (uint16_t)0);
+}
+
+// Q24.8 takes fewer steps (two Newton steps, the series cut after h):
+// the same bounds in its units of 2^-8, every h from 0 to past 1/2.
+test(q24_8InverseSqrtAndTurnFactor) {
+  typedef Q24_8 C;
+  const double unit = 1.0 / 256;
+  gFailures = 0;
+  for (uint8_t s = 0; s < 31; ++s) {
+    for (int8_t d = -2; d <= 2; ++d) {
+      const int32_t raw = (int32_t(1) << s) + d;
+      if (raw <= 0) continue;
+      const double q = raw * unit;
+      const double got = inverseSqrt(C::fromRaw(raw)).raw() * unit;
+      const double want = 1.0 / sqrt(q);
+      if (fabs(got - want) > 5 * unit * want + unit) {
+        fail(F("Q24.8 inverseSqrt"), q, got, want);
+      }
+    }
+  }
+  for (int32_t raw = 0; raw <= 160; ++raw) {
+    const double got = turnDropFactor(C::fromRaw(raw)).raw() * unit;
+    const double want = turnFactorOf(raw * unit);
+    if (fabs(got - want) > 4 * unit) {
+      fail(F("Q24.8 turnDropFactor"), raw * unit, got, want);
+    }
+  }
   assertEqual(gFailures, (uint16_t)0);
 }
 

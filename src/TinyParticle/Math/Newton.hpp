@@ -138,17 +138,20 @@ inline S turnDropFactor(S h) {
 }
 // Fixed: up to h = 1/32 (a turn of 1/4 rad) the series 1 + h/2 + h^2/2 +
 // 5h^3/8 + 7h^4/8 + 21h^5/16 + ... (Catalan numbers over powers of 2),
-// cut after h^4, off by less than 4e-8; beyond, Newton's steps (rare: a
-// whip), with sqrt(m) = m / sqrt(m) and 1 / t = 1 / sqrt(t^2).
+// whose term in h^n is below 1.4 (1/32)^n there: cut after the last term
+// that reaches half a unit of the format (h^3 for 16 fraction bits: the
+// rest is below 9e-7; h for 8 bits: below 5e-4). Beyond, Newton's steps
+// (rare: a whip), with sqrt(m) = m / sqrt(m) and 1 / t = 1 / sqrt(t^2).
 template <uint8_t I, uint8_t F>
 Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   typedef Fixed<I, F> S;
+  const uint8_t kTerms = F < 10 ? 1 : (F < 15 ? 2 : (F < 20 ? 3 : 4));
   if (!(h > S(1.0 / 32))) {
-    S p = S(0.875);
-    p = S(0.625) + h * p;
-    p = S(0.5) + h * p;
-    p = S(0.5) + h * p;
-    return S(1) + h * p;
+    S p = S();
+    if (kTerms >= 4) p = h * S(0.875);
+    if (kTerms >= 3) p = h * (S(0.625) + p);
+    if (kTerms >= 2) p = h * (S(0.5) + p);
+    return S(1) + h * (S(0.5) + p);
   }
   if (!(h < S(0.5))) return S(2);
   const S m = S(1) - (h + h);
