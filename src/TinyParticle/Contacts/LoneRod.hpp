@@ -4,7 +4,8 @@
 // another, so there is nothing to eliminate, and each rod is solved in one
 // pass with the step equations of the chains' solve (Contacts/RodSolver.hpp:
 // positionSpeed(), exact at any turn), about 24 multiplies per rod and step
-// in 2D, no division and no square root while it turns slowly.
+// in 2D, no division and no square root (in fixed point not even when it
+// turns fast, or at set-up: Math/Newton.hpp).
 //
 // Which solver a world links (World::rodAdded()): a world whose rods can
 // never share a particle takes this one alone, and the chains' solve (the

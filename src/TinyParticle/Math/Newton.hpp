@@ -4,17 +4,17 @@
 // square root (about 1.7 KB of code and tables in Q16.16) for work done at
 // set-up or on a rare path: a rod's 1 / L and first direction, the exact
 // length of a rod that turned fast, a direction renormalised after a fast
-// turn. These take Newton's iterations from a first guess instead:
+// turn. For Fixed, 1 / x is a long division (small, slow, exact), and
+// 1 / sqrt(x) takes Newton's iterations from a first guess:
 // - the argument is brought into [1/2, 2) by powers of 4 (exact upwards;
 //   downwards, in fixed point, each halving rounds);
-// - a straight line gives the first guess of 1 / sqrt(q), within 9 %;
-// - each Newton step squares the relative error: four leave less than
-//   2e-15 before rounding, below a float's half unit.
+// - a parabola gives the first guess of 1 / sqrt(q), within 2.6 %;
+// - each Newton step squares the relative error: two leave 1.5e-6.
 // In Q16.16 the inverse square root is within 5 units of 2^-16 relative
 // plus one unit (extras/test/NewtonTest checks it on every leading-bit
 // position). The reciprocal is a long division, exact.
-// Slower than the divide and the square root (about 15 multiplies): for
-// set-up and rare paths, not for every step.
+// Slower than the divide and the square root (about a dozen multiplies,
+// or a long division): for set-up and rare paths, not for every step.
 #pragma once
 
 #include <stdint.h>
@@ -38,15 +38,15 @@ inline S inverseSqrt(S q) {
   return isPositive(q) ? S(1) / sqrt(q) : S();
 }
 // Fixed: q is brought into [1/2, 2) by factors of 4 (exact upwards;
-// downwards the halvings round), then a straight line, within 9 %, and
-// Newton's steps, each squaring the relative error: two leave 1.6e-4
-// (enough for 10 fraction bits), three 3.9e-8 (24 bits). The root is
-// scaled back by the same powers of 2; a result beyond the format
-// saturates and raises MathError::kOverflow.
+// downwards the halvings round), then a parabola in steps of 2^-8, within
+// 2.6 %, and Newton's steps, each squaring the relative error (times
+// 1.5): one leaves 1e-3 (enough for 10 fraction bits), two 1.5e-6 (18
+// bits), three 4e-12. The root is scaled back by the same powers of 2; a
+// result beyond the format saturates and raises MathError::kOverflow.
 template <uint8_t I, uint8_t F>
 TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrt(Fixed<I, F> q) {
   typedef Fixed<I, F> S;
-  const uint8_t kSteps = F <= 10 ? 2 : (F <= 24 ? 3 : 4);
+  const uint8_t kSteps = F <= 10 ? 1 : (F <= 18 ? 2 : 3);
   if (!isPositive(q)) return S();
   int8_t doublings = 0;  // 1 / sqrt(q) = 2^doublings / sqrt(q')
   while (q < S(0.5)) {
@@ -58,7 +58,7 @@ TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrt(Fixed<I, F> q) {
     q = half(half(q));
     --doublings;
   }
-  S y = S(1.5) - S(0.4375) * q;
+  S y = S(483.0 / 256) - q * (S(297.0 / 256) - q * S(74.0 / 256));
   for (uint8_t i = 0; i < kSteps; ++i) y = y * (S(1.5) - half(q * y * y));
   for (; doublings > 0; --doublings) y += y;
   for (; doublings < 0; ++doublings) y = half(y);
