@@ -70,6 +70,7 @@
 
 #include <stdint.h>
 
+#include "../Math/Newton.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
@@ -104,16 +105,17 @@ struct RodSolver {
   static void generate(W&, Slot&, uint8_t) {}
 
   // A rod just added: its length's inverse and its first direction. False
-  // (nothing set) for a length that is not positive.
+  // (nothing set) for a length that is not positive. Multiplies only
+  // (Math/Newton.hpp): a world whose step never divides links no divide.
   static bool start(W& world, Slot& s) {
     typename W::LinkParamsType& link = linkOf(s);
     if (!(link.length > S())) return false;
-    link.inverseLength = S(1) / link.length;
+    link.inverseLength = detail::reciprocal(link.length);
     V d = span(world, s);
     // Ends that coincide have no direction: any will do (as for colliding
     // balls), and the rod pushes them apart along it. (With none, they
     // stayed together, unflagged: extras/stability.)
-    if (!d.normalize()) d.y = S(1);
+    if (!detail::normalizeByMultiplies(d)) d.y = S(1);
     link.direction = d;
     link.next = link.prev = kNoIndex;
     return true;
@@ -577,6 +579,10 @@ struct RodSolver {
   // included (`error` becomes 0); a fast rod that is off its length by
   // more than L/16 is not one that turns but one that the others keep
   // from its length (or that the sketch moved): position only.
+  //
+  // The exact form's drop, dt s^2 / (L + sqrt(L^2 - (dt s)^2)), is
+  // (dt s^2 / 2L) detail::turnDropFactor(h), h = (dt s / L)^2 / 2 the half
+  // square of the turn that decides `turning`: no division, no square root.
   static S positionSpeed(const V& d, const V& w, const V& u,
                          const typename W::LinkParamsType& link,
                          const Pass& pass, S& error, bool& turning) {
@@ -588,16 +594,14 @@ struct RodSolver {
     const S invL = link.inverseLength;
     error = length - f.along;
     if (!pass.unit) error = detail::half(error);  // u = d / L: Lone rods
-    const S dropDt = byDt(f.across2);  // dt s^2
-    const S drop = detail::half(dropDt) * invL;
-    turning = byDt(drop) * invL > S(1.0 / 512);
+    const S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
+    const S halfTurn2 = byDt(drop) * invL;  // (dt s / L)^2 / 2
+    turning = halfTurn2 > S(1.0 / 512);
     if (!turning) return -f.radial - drop;
     // Far off: the offset across u is a move too, not a turn.
     if (!(fabs(error) * invL < S(1.0 / 16))) return -f.radial;
-    const S sideways = byDt(dropDt);  // (dt s)^2
-    const S squared = length * length;
-    const S rest = squared > sideways ? sqrt(squared - sideways) : S();
-    const S speed = error * invDt - f.radial - dropDt / (length + rest);
+    const S speed =
+        error * invDt - f.radial - drop * detail::turnDropFactor(halfTurn2);
     error = S();
     return speed;
   }

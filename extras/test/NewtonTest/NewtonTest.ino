@@ -1,0 +1,231 @@
+// The multiply-only reciprocal, inverse square root, unit vector and turn
+// factor of Math/Newton.hpp, against the exact values (double on the host,
+// float on the Nano: both far finer than the bounds), on every input class
+// they distinguish: each leading-bit position of the argument and its
+// neighbours (the reduction by powers of two), the ends of the reduced
+// range, zero and negatives, and for the turn factor both sides of its
+// series' limit h = 1/32 and of h = 1/2.
+//
+// Bounds (Q16.16): after the reduction the inverse square root is in
+// (0.7, 1.42]; the last Newton step rounds three products and a halving,
+// about 2.5 units, and a reduction downwards rounds q by up to 2^-15
+// relatively, 2^-16 in the root: 5 units of 2^-16 relative in all.
+// Scaling back by 2^k keeps the relative error, and its halvings round:
+// one unit more. The reciprocal (a long division) equals the divide.
+// A unit vector: each component within 3 units (the inverse square root's
+// relative error on components below 1, plus the product's rounding). The
+// turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or two
+// inverse square roots on arguments near 1); the same in units of 2^-8
+// for Q24.8. Float (the plain formulas): 4 units of 2^-24
+// relative for the inverse square root, 8 for the turn factor.
+#include <AUnit.h>
+#include <TinyParticle.h>
+#include <TinyParticle/Math/Newton.hpp>
+#include <math.h>
+
+using aunit::TestRunner;
+using tinyparticle::detail::inverseSqrt;
+using tinyparticle::detail::normalizeByMultiplies;
+using tinyparticle::detail::reciprocal;
+using tinyparticle::detail::turnDropFactor;
+
+typedef Q16_16 T;
+typedef T::Raw Raw;
+const double kUnit = 1.0 / 65536;
+
+static double valueOf(T x) { return double(x.raw()) * kUnit; }
+
+static uint16_t gFailures;
+static void fail(const __FlashStringHelper* what, double x, double got,
+                 double want) {
+  if (++gFailures > 10) return;
+  Serial.print(what);
+  Serial.print(F(" x="));
+  Serial.print(x, 8);
+  Serial.print(F(" got "));
+  Serial.print(got, 8);
+  Serial.print(F(" want "));
+  Serial.println(want, 8);
+}
+
+static void checkInverseSqrt(Raw q) {
+  const T y = inverseSqrt(T::fromRaw(q));
+  const double want = 1.0 / sqrt(valueOf(T::fromRaw(q)));
+  if (fabs(valueOf(y) - want) > 5 * kUnit * want + kUnit) {
+    fail(F("inverseSqrt"), valueOf(T::fromRaw(q)), valueOf(y), want);
+  }
+}
+
+// The reciprocal is the divide's 1 / x, bit for bit, flags included.
+static void checkReciprocal(Raw x) {
+  clearMathErrors();
+  const Raw r = reciprocal(T::fromRaw(x)).raw();
+  const uint8_t flags = mathErrors();
+  clearMathErrors();
+  const Raw want = T::referenceDivide(T::kRawOne, x);
+  if (r != want || flags != mathErrors()) {
+    fail(F("reciprocal"), valueOf(T::fromRaw(x)), r, want);
+  }
+}
+
+static void checkUnit(Raw a, Raw b) {
+  if (a == 0 && b == 0) return;  // (below)
+  Vec2<T> v;
+  v.x = T::fromRaw(a);
+  v.y = T::fromRaw(b);
+  const bool nonZero = normalizeByMultiplies(v);
+  const double x = a * kUnit, y = b * kUnit;
+  const double length = sqrt(x * x + y * y);
+  if (!nonZero || fabs(valueOf(v.x) - x / length) > 3 * kUnit ||
+      fabs(valueOf(v.y) - y / length) > 3 * kUnit) {
+    fail(F("unit"), x, valueOf(v.x), x / length);
+  }
+}
+
+static double turnFactorOf(double h) {
+  return h >= 0.5 ? 2.0 : 2.0 / (1.0 + sqrt(1.0 - 2.0 * h));
+}
+
+static void checkTurn(Raw h) {
+  const T f = turnDropFactor(T::fromRaw(h));
+  const double want = turnFactorOf(h * kUnit);
+  if (fabs(valueOf(f) - want) > 4 * kUnit) {
+    fail(F("turnDropFactor"), h * kUnit, valueOf(f), want);
+  }
+}
+
+// Each leading-bit position of a positive raw value and its neighbours.
+#define FOR_EACH_LEADING_BIT(check)                             \
+  for (uint8_t s = 0; s < 31; ++s) {                            \
+    const int32_t p = int32_t(1) << s;                          \
+    for (int8_t d = -2; d <= 2; ++d) {                          \
+      if (p + d > 0) check(Raw(p + d));                         \
+    }                                                           \
+  }                                                             \
+  check(Raw(INT32_MAX));                                        \
+  check(Raw(INT32_MAX - 1))
+
+test(inverseSqrtAtEveryLeadingBit) {
+  gFailures = 0;
+  FOR_EACH_LEADING_BIT(checkInverseSqrt);
+  // The reduced range [1/2, 2) inside, in steps of 1/256.
+  for (Raw q = 32768; q < 131072; q += 256) checkInverseSqrt(q);
+  assertEqual(gFailures, (uint16_t)0);
+  clearMathErrors();
+  assertTrue(inverseSqrt(T(0)) == T(0));
+  assertTrue(inverseSqrt(T(-1)) == T(0));
+  assertTrue(inverseSqrt(T::lowest()) == T(0));
+  assertTrue(inverseSqrt(T(4)) == T(0.5));
+  assertEqual(mathErrors(), (uint8_t)0);
+}
+
+test(reciprocalAtEveryLeadingBit) {
+  gFailures = 0;
+  FOR_EACH_LEADING_BIT(checkReciprocal);
+  assertEqual(gFailures, (uint16_t)0);
+  assertTrue(reciprocal(T(0)) == T(0));
+  assertTrue(reciprocal(T(-2)) == T(0));
+  // Beyond the format: saturated, flagged.
+  clearMathErrors();
+  assertTrue(reciprocal(T::epsilon()) == T::largest());
+  assertEqual(mathErrors(), (uint8_t)MathError::kOverflow);
+  clearMathErrors();
+}
+
+test(unitVectorsAtEveryLeadingBit) {
+  gFailures = 0;
+  const Raw others[] = {0, 1, -1, 46341, -65536, 1234567, INT32_MAX,
+                        -INT32_MAX};
+  for (uint8_t s = 0; s < 31; ++s) {
+    const int32_t p = int32_t(1) << s;
+    for (int8_t d = -1; d <= 1; ++d) {
+      for (uint8_t k = 0; k < sizeof(others) / sizeof(others[0]); ++k) {
+        checkUnit(p + d, others[k]);
+        checkUnit(others[k], -(p + d));
+      }
+    }
+  }
+  assertEqual(gFailures, (uint16_t)0);
+  Vec2<T> zero;
+  assertFalse(normalizeByMultiplies(zero));
+  assertTrue(zero.x == T(0) && zero.y == T(0));
+}
+
+test(turnFactorOnBothSidesOfItsLimits) {
+  gFailures = 0;
+  // 0, the threshold of a turn (1/512), the series' end (1/32), the
+  // reach of the rod (1/2), in Q16.16 units, with neighbours.
+  const Raw edges[] = {0, 128, 2048, 32768, 65536};
+  for (uint8_t k = 0; k < sizeof(edges) / sizeof(edges[0]); ++k) {
+    for (int8_t d = -3; d <= 3; ++d) {
+      if (edges[k] + d >= 0) checkTurn(edges[k] + d);
+    }
+  }
+  for (Raw h = 0; h < 40000; h += 97) checkTurn(h);
+  assertEqual(gFailures, (uint16_t)0);
+}
+
+// Q24.8 takes fewer steps (two Newton steps, the series cut after h):
+// the same bounds in its units of 2^-8, every h from 0 to past 1/2.
+test(q24_8InverseSqrtAndTurnFactor) {
+  typedef Q24_8 C;
+  const double unit = 1.0 / 256;
+  gFailures = 0;
+  for (uint8_t s = 0; s < 31; ++s) {
+    for (int8_t d = -2; d <= 2; ++d) {
+      const int32_t raw = (int32_t(1) << s) + d;
+      if (raw <= 0) continue;
+      const double q = raw * unit;
+      const double got = inverseSqrt(C::fromRaw(raw)).raw() * unit;
+      const double want = 1.0 / sqrt(q);
+      if (fabs(got - want) > 5 * unit * want + unit) {
+        fail(F("Q24.8 inverseSqrt"), q, got, want);
+      }
+    }
+  }
+  for (int32_t raw = 0; raw <= 160; ++raw) {
+    const double got = turnDropFactor(C::fromRaw(raw)).raw() * unit;
+    const double want = turnFactorOf(raw * unit);
+    if (fabs(got - want) > 4 * unit) {
+      fail(F("Q24.8 turnDropFactor"), raw * unit, got, want);
+    }
+  }
+  assertEqual(gFailures, (uint16_t)0);
+}
+
+#if defined(EPOXY_DUINO)
+// Float: the same reductions by powers of two, from 2^-100 to 2^100.
+test(floatInverseSqrtAndTurnFactor) {
+  gFailures = 0;
+  for (int e = -100; e <= 100; ++e) {
+    for (int d = -1; d <= 1; ++d) {
+      const float q = ldexpf(1.0f + float(d) * 1.1920929e-7f, e);
+      const double want = 1.0 / sqrt(double(q));
+      const double got = inverseSqrt(Float(q)).toFloat();
+      if (fabs(got - want) > 4 * 5.9604645e-8 * want) {
+        fail(F("float inverseSqrt"), q, got, want);
+      }
+    }
+  }
+  for (int i = 0; i <= 600; ++i) {
+    const double h = i / 1000.0;
+    const double got = turnDropFactor(Float(float(h))).toFloat();
+    const double want = turnFactorOf(double(float(h)));
+    if (fabs(got - want) > 8 * 5.9604645e-8 * want) {
+      fail(F("float turnDropFactor"), h, got, want);
+    }
+  }
+  assertEqual(gFailures, (uint16_t)0);
+}
+#endif
+
+void setup() {
+#if !defined(EPOXY_DUINO)
+  delay(1000);
+#endif
+  Serial.begin(115200);
+  while (!Serial);
+  TestRunner::setTimeout(0);
+}
+
+void loop() { TestRunner::run(); }

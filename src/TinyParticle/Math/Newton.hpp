@@ -1,0 +1,164 @@
+// Reciprocals, square roots and unit vectors from multiplies only (Fixed).
+//
+// A scene whose step never divides should not link the divide and the
+// square root (about 1.7 KB of code and tables in Q16.16) for work done at
+// set-up or on a rare path: a rod's 1 / L and first direction, the exact
+// length of a rod that turned fast, a direction renormalised after a fast
+// turn. For Fixed, 1 / x is a long division (small, slow, exact), and
+// 1 / sqrt(x) takes Newton's iterations from a first guess:
+// - the argument is brought into [1/2, 2) by powers of 4 (exact upwards;
+//   downwards, in fixed point, each halving rounds);
+// - a parabola gives the first guess of 1 / sqrt(q), within 2.6 %;
+// - each Newton step squares the relative error: two leave 1.5e-6.
+// In Q16.16 the inverse square root is within 5 units of 2^-16 relative
+// plus one unit (extras/test/NewtonTest checks it on every leading-bit
+// position). The reciprocal is a long division, exact.
+// Slower than the divide and the square root (about a dozen multiplies,
+// or a long division): for set-up and rare paths, not for every step.
+#pragma once
+
+#include <stdint.h>
+
+#include "Fixed.hpp"
+#include "Float.hpp"
+#include "Scaler.hpp"
+#include "Vec.hpp"
+#include "Zero.hpp"
+
+namespace tinyparticle {
+namespace detail {
+
+// Other scalars (Float, a host's double) have a compact divide and square
+// root, and a world that steps divides already (1 / dt): for them the
+// functions below are the plain formulas; Newton's steps are for Fixed.
+
+// 1 / sqrt(q) for q > 0 (q <= 0 gives 0).
+template <typename S>
+inline S inverseSqrt(S q) {
+  return isPositive(q) ? S(1) / sqrt(q) : S();
+}
+// Fixed: q is brought into [1/2, 2) by factors of 4 (exact upwards;
+// downwards the halvings round), then a parabola in steps of 2^-8, within
+// 2.6 %, and Newton's steps, each squaring the relative error (times
+// 1.5): one leaves 1e-3 (enough for 10 fraction bits), two 1.5e-6 (18
+// bits), three 4e-12. The root is scaled back by the same powers of 2; a
+// result beyond the format saturates and raises MathError::kOverflow.
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrt(Fixed<I, F> q) {
+  typedef Fixed<I, F> S;
+  const uint8_t kSteps = F <= 10 ? 1 : (F <= 18 ? 2 : 3);
+  if (!isPositive(q)) return S();
+  int8_t doublings = 0;  // 1 / sqrt(q) = 2^doublings / sqrt(q')
+  while (q < S(0.5)) {
+    q += q;
+    q += q;
+    ++doublings;
+  }
+  while (!(q < S(2))) {
+    q = half(half(q));
+    --doublings;
+  }
+  S y = S(483.0 / 256) - q * (S(297.0 / 256) - q * S(74.0 / 256));
+  for (uint8_t i = 0; i < kSteps; ++i) y = y * (S(1.5) - half(q * y * y));
+  for (; doublings > 0; --doublings) y += y;
+  for (; doublings < 0; ++doublings) y = half(y);
+  return y;
+}
+
+// 1 / x for x > 0: the divide.
+template <typename S>
+inline S reciprocal(S x) {
+  return S(1) / x;
+}
+// Fixed (x <= 0 gives 0): exactly the divide's 1 / x (rounded to nearest, ties away;
+// beyond the format it saturates and raises MathError::kOverflow), from a
+// long division one bit at a time: a few dozen bytes, about a thousand
+// cycles on AVR. (A rod's 1 / L must be exact: a short Q16.16 pendulum's
+// energy error grew from 0.6 % to 1.4 % with a reciprocal a few units
+// off.)
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_NOINLINE Fixed<I, F> reciprocal(Fixed<I, F> x) {
+  typedef Fixed<I, F> T;
+  typedef typename T::URaw U;
+  if (!isPositive(x)) return T();
+  const U d = U(x.raw());
+  const U top = U(U(1) << (I + F - 1));
+  // 2^(2F) / d: the numerator's single one bit comes in first, then
+  // zeros. r < d < top, so 2r + 1 fits U.
+  U q = 0, r = 0;
+  for (uint8_t i = 0; i <= 2 * F; ++i) {
+    if ((q & top) != 0) return T::fromRaw(T::overflow(false));
+    q = U(q << 1);
+    r = U(U(r << 1) | (i == 0 ? 1u : 0u));
+    if (r >= d) {
+      r = U(r - d);
+      q = U(q | 1u);
+    }
+  }
+  if (r >= U(d - r)) q = U(q + 1u);  // twice the remainder reaches d
+  if (q >= top) return T::fromRaw(T::overflow(false));
+  return T::fromRaw(typename T::Raw(q));
+}
+
+// v scaled to unit length; false (v unchanged) for a zero vector.
+template <typename S, uint8_t N>
+inline bool normalizeByMultiplies(Vec<S, N>& v) {
+  return v.normalize();
+}
+// Fixed: the largest component is first brought into [1/2, 1) by powers
+// of two, so that short vectors keep their bits and long ones cannot
+// overflow; then v / |v| = v (1 / sqrt(|v|^2)).
+template <uint8_t I, uint8_t F, uint8_t N>
+TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Fixed<I, F>, N>& v) {
+  typedef Fixed<I, F> S;
+  S largest = S();
+  for (uint8_t i = 0; i < N; ++i) largest = fmax(largest, fabs(v[i]));
+  if (isZero(largest)) return false;
+  while (largest < S(0.5)) {
+    largest += largest;
+    v += v;
+  }
+  while (!(largest < S(1))) {
+    largest = half(largest);
+    v *= S(0.5);
+  }
+  v *= inverseSqrt(v.magnitudeSquared());
+  return true;
+}
+
+// 2 / (1 + sqrt(1 - 2h)) for h >= 0: what a rod that turns by t = sqrt(2h)
+// radians in a step drops along itself, in units of the second order
+// form's t^2 / 2 (Contacts/RodSolver.hpp, positionSpeed()). From h = 1/2
+// (a turn of 1 rad) the rod cannot reach its length in the step: the
+// square root is taken as 0, and the factor is 2.
+template <typename S>
+inline S turnDropFactor(S h) {
+  if (!(h < S(0.5))) return S(2);
+  return S(2) / (S(1) + sqrt(S(1) - (h + h)));
+}
+// Fixed: up to h = 1/32 (a turn of 1/4 rad) the series 1 + h/2 + h^2/2 +
+// 5h^3/8 + 7h^4/8 + 21h^5/16 + ... (Catalan numbers over powers of 2),
+// whose term in h^n is below 1.4 (1/32)^n there: cut after the last term
+// that reaches half a unit of the format (h^3 for 16 fraction bits: the
+// rest is below 9e-7; h for 8 bits: below 5e-4). Beyond, Newton's steps
+// (rare: a whip), with sqrt(m) = m / sqrt(m) and 1 / t = 1 / sqrt(t^2).
+template <uint8_t I, uint8_t F>
+Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
+  typedef Fixed<I, F> S;
+  const uint8_t kTerms = F < 10 ? 1 : (F < 15 ? 2 : (F < 20 ? 3 : 4));
+  if (!(h > S(1.0 / 32))) {
+    S p = S();
+    if (kTerms >= 4) p = h * S(0.875);
+    if (kTerms >= 3) p = h * (S(0.625) + p);
+    if (kTerms >= 2) p = h * (S(0.5) + p);
+    return S(1) + h * (S(0.5) + p);
+  }
+  if (!(h < S(0.5))) return S(2);
+  const S m = S(1) - (h + h);
+  const S t = S(1) + m * inverseSqrt(m);
+  const S r = inverseSqrt(t * t);
+  return r + r;
+}
+
+}  // namespace detail
+}  // namespace tinyparticle
