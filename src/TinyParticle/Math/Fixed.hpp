@@ -369,6 +369,44 @@ class Fixed {
     return fromMagnitude(quotient, (a < 0) != (b < 0));
   }
 
+  // 1 / b, exactly as divide(kRawOne, b) gives it (rounding, saturation,
+  // flags; b = 0 as in divide()), from a bit-by-bit long division: a few
+  // dozen bytes of code, but about a thousand cycles on AVR. For set-up
+  // (an inverse mass, an inverse length): a sketch that never divides
+  // while stepping then links neither the fast divide nor its table.
+  // Portable, and the same code on every target.
+  TINYPARTICLE_NOINLINE static Raw compactReciprocal(Raw b) {
+    if (b == 0) return divideByZero(kRawOne);
+    const bool negative = b < 0;
+    const URaw d = magnitude(b);
+    // The quotient reaches 2^bits (saturated whatever its sign) exactly
+    // when d <= 2^(2 FracBits - bits); past that test the bits that the
+    // loop shifts out of q are zeros.
+    bool saturated = d <= kSaturatingDivisor;
+    URaw q = 0;
+    if (!saturated) {
+      // Long division of 2^(2 FracBits) by d: r is the partial remainder,
+      // doubled for the next digit (the numerator's single 1 is its
+      // start, the digits after it are zeros). r < 2d <= 2^bits: it fits.
+      URaw r = 1;
+      for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
+        q = URaw(q << 1);
+        if (r >= d) {
+          r = URaw(r - d);
+          q = URaw(q | 1u);
+        }
+        r = URaw(r << 1);
+      }
+      // r is now twice the remainder: round up when it reaches d, as the
+      // divide does (q + 1 stays below 2^bits, given the test above).
+      if (r >= d) q = URaw(q + 1u);
+      saturated = q > URaw(URaw(kRawMax) + (negative ? 1u : 0u));
+    }
+    if (saturated) return overflow(negative);
+    if (!negative) return Raw(q);
+    return q > URaw(kRawMax) ? kRawMin : Raw(-Raw(q));
+  }
+
   static Raw referenceSquareRoot(Raw x) {
     if (x < 0) return negativeSqrt();
     // sqrt(raw / 2^F) * 2^F = sqrt(raw * 2^F): an integer square root.
@@ -430,6 +468,14 @@ class Fixed {
   // long is 32 bits on AVR, so these compares stay cheap there.
   static constexpr long kIntMax = long(kRawMax >> FracBits);
   static constexpr long kIntMin = -kIntMax - 1;
+  // compactReciprocal(): |b| up to this gives a quotient of 2^bits or more
+  // (0: none does, as in Q24.8).
+  static constexpr URaw kSaturatingDivisor =
+      2 * FracBits >= kTotalBits
+          ? URaw(URaw(1) << (2 * FracBits >= kTotalBits
+                                 ? 2 * FracBits - kTotalBits
+                                 : 0))
+          : URaw(0);
 
   static Raw divideByZero(Raw a) {
     detail::raiseMathError(MathError::kDivideByZero);
@@ -526,6 +572,21 @@ struct FixedFast {
   // x >= 0 (Fixed::squareRoot handled it).
   static Raw squareRoot(Raw x) { return T::referenceSquareRoot(x); }
 };
+}  // namespace detail
+
+namespace detail {
+// 1 / x, the same value and flags as S(1) / x, from code that is small
+// rather than fast (Fixed::compactReciprocal): for set-up, where a divide
+// would link the fast divide into a sketch that never divides in a step.
+// Other scalars divide.
+template <typename S>
+inline S compactReciprocal(S x) {
+  return S(1) / x;
+}
+template <uint8_t I, uint8_t F>
+inline Fixed<I, F> compactReciprocal(Fixed<I, F> x) {
+  return Fixed<I, F>::fromRaw(Fixed<I, F>::compactReciprocal(x.raw()));
+}
 }  // namespace detail
 
 // The formats the library names. Q16_16 is the default fixed type.

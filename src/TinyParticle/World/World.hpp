@@ -146,7 +146,10 @@ class World
       mError |= WorldError::kBadArgument;
       return ParticleId();
     }
-    return addWithInverseMass(position, S(1) / mass, radius);
+    // Set-up: the compact reciprocal, so that a scene whose step never
+    // divides links no fast divide (Math/Fixed.hpp).
+    return addWithInverseMass(position, detail::compactReciprocal(mass),
+                              radius);
   }
 
   // An immovable particle (inverse mass 0): pivots and anchors.
@@ -413,7 +416,7 @@ class World
       return false;
     }
     link->length = length;
-    link->inverseLength = S(1) / length;
+    link->inverseLength = detail::compactReciprocal(length);
     return true;
   }
 
