@@ -375,36 +375,41 @@ class Fixed {
   // (an inverse mass, an inverse length): a sketch that never divides
   // while stepping then links neither the fast divide nor its table.
   // Portable, and the same code on every target.
-  TINYPARTICLE_NOINLINE static Raw compactReciprocal(Raw b) {
+  // Inlined, so that what the caller knows of b (a mass is positive)
+  // drops the tests it makes unnecessary; the loop is out of line.
+  TINYPARTICLE_ALWAYS_INLINE static Raw compactReciprocal(Raw b) {
     if (b == 0) return divideByZero(kRawOne);
     const bool negative = b < 0;
     const URaw d = magnitude(b);
     // The quotient reaches 2^bits (saturated whatever its sign) exactly
-    // when d <= 2^(2 FracBits - bits); past that test the bits that the
-    // loop shifts out of q are zeros.
-    bool saturated = d <= kSaturatingDivisor;
-    URaw q = 0;
-    if (!saturated) {
-      // Long division of 2^(2 FracBits) by d: r is the partial remainder,
-      // doubled for the next digit (the numerator's single 1 is its
-      // start, the digits after it are zeros). r < 2d <= 2^bits: it fits.
-      URaw r = 1;
-      for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
-        q = URaw(q << 1);
-        if (r >= d) {
-          r = URaw(r - d);
-          q = URaw(q | 1u);
-        }
-        r = URaw(r << 1);
-      }
-      // r is now twice the remainder: round up when it reaches d, as the
-      // divide does (q + 1 stays below 2^bits, given the test above).
-      if (r >= d) q = URaw(q + 1u);
-      saturated = q > URaw(URaw(kRawMax) + (negative ? 1u : 0u));
+    // when d <= 2^(2 FracBits - bits).
+    if (d <= kSaturatingDivisor) return overflow(negative);
+    const URaw q = reciprocalMagnitude(d);
+    if (q > URaw(URaw(kRawMax) + (negative ? 1u : 0u))) {
+      return overflow(negative);
     }
-    if (saturated) return overflow(negative);
     if (!negative) return Raw(q);
     return q > URaw(kRawMax) ? kRawMin : Raw(-Raw(q));
+  }
+  // round(2^(2 FracBits) / d), ties up, for d > kSaturatingDivisor (the
+  // result is then below 2^bits): long division, r the partial remainder
+  // doubled for the next digit (the numerator's single 1 is its start,
+  // the digits after it are zeros); r < 2d <= 2^bits, so it fits URaw, and
+  // the bits shifted out of q are zeros.
+  TINYPARTICLE_NOINLINE static URaw reciprocalMagnitude(URaw d) {
+    URaw q = 0;
+    URaw r = 1;
+    for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
+      q = URaw(q << 1);
+      if (r >= d) {
+        r = URaw(r - d);
+        q = URaw(q | 1u);
+      }
+      r = URaw(r << 1);
+    }
+    // r is now twice the remainder: round up when it reaches d, as the
+    // divide does.
+    return r >= d ? URaw(q + 1u) : q;
   }
 
   static Raw referenceSquareRoot(Raw x) {
@@ -584,7 +589,7 @@ inline S compactReciprocal(S x) {
   return S(1) / x;
 }
 template <uint8_t I, uint8_t F>
-inline Fixed<I, F> compactReciprocal(Fixed<I, F> x) {
+TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocal(Fixed<I, F> x) {
   return Fixed<I, F>::fromRaw(Fixed<I, F>::compactReciprocal(x.raw()));
 }
 }  // namespace detail

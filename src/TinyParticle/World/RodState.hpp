@@ -20,11 +20,13 @@ struct RodState {
   Solve rodSolver() const { return mSolveRods; }
   void setRodSolver(Solve solve) { mSolveRods = solve; }
   // 1 / dt, computed again only when dt changes: rarely, so the compact
-  // reciprocal (Math/Fixed.hpp) does it.
+  // reciprocal (Math/Fixed.hpp) does it. The step refuses a dt <= 0; the
+  // test here only tells the compiler, which then drops the reciprocal's
+  // sign and zero cases.
   S inverseOf(S dt) {
     if (!(dt == mDt)) {
       mDt = dt;
-      mInverseDt = detail::compactReciprocal(dt);
+      mInverseDt = dt > S() ? detail::compactReciprocal(dt) : S();
     }
     return mInverseDt;
   }
