@@ -18,6 +18,13 @@
 namespace tinyparticle {
 namespace detail {
 
+// ParticleSteps<Float, Dim>::finiteLimit(): x is infinite or NaN.
+inline Float finiteLimitOfFloat(Float x) {
+  const uint32_t bits = floatBits(x);
+  if ((bits & 0x007FFFFFul) != 0) return Float();  // NaN
+  return (bits & 0x80000000ul) != 0 ? Float::lowest() : Float::largest();
+}
+
 template <typename S, uint8_t Dim>
 struct ParticleSteps {
   typedef Particle<S, Dim> P;
@@ -146,10 +153,16 @@ struct ParticleSteps {
   TINYPARTICLE_NOINLINE static void nonFinitePosition(P& p, uint16_t& error) {
     for (uint8_t k = 0; k < Dim; ++k) {
       S& x = p.position[k];
-      if (!isNonFinite(x)) continue;
-      x = x > S() ? S::largest() : (x < S() ? S::lowest() : S());
+      if (isNonFinite(x)) x = finiteLimit(x);
     }
     nonFinite(p, error);
+  }
+
+  // What a non-finite component saturates to: +-largest() for an
+  // infinity, 0 for a NaN (for Float from the sign bit and the mantissa:
+  // no float compare, which is a library call on AVR).
+  static S finiteLimit(S x) {
+    return x > S() ? S::largest() : (x < S() ? S::lowest() : S());
   }
 
   // One axis of a step: v += a dt + (uniform a) dt, then x += v dt. Zeros
@@ -169,6 +182,15 @@ struct ParticleSteps {
     if (!isZero(velocity)) position += byDt(velocity);
   }
 };
+
+template <>
+inline Float ParticleSteps<Float, 2>::finiteLimit(Float x) {
+  return finiteLimitOfFloat(x);
+}
+template <>
+inline Float ParticleSteps<Float, 3>::finiteLimit(Float x) {
+  return finiteLimitOfFloat(x);
+}
 
 }  // namespace detail
 }  // namespace tinyparticle
