@@ -1,6 +1,7 @@
 // The compact reciprocal (Fixed::compactReciprocal, used at set-up for
-// inverse masses and lengths) equals 1 / b as the divide gives it, bit for
-// bit and flag for flag, in Q16.16, Q24.8 and Q8.8: against the portable
+// inverse masses and lengths, and compactReciprocalOfPositive for the
+// rods' 1 / dt) equals 1 / b as the divide gives it, bit for bit and flag
+// for flag, in Q16.16, Q24.8 and Q8.8: against the portable
 // referenceDivide(one, b) and against the operator (on the Nano the fast
 // AVR divide). Independently of both, a Q16.16 result is within half a
 // step of 1 / b (exact 64-bit inequalities), or saturated with kOverflow;
@@ -72,8 +73,18 @@ struct Checks {
     const Raw wrapped =
         tinyparticle::detail::compactReciprocal(T::fromRaw(b)).raw();
     const uint8_t wrappedFlags = mathErrors();
+    // The variant for a positive argument (a step's dt), where it applies.
+    bool positiveAgrees = true;
+    if (b > 0) {
+      clearMathErrors();
+      const Raw positive =
+          tinyparticle::detail::compactReciprocalOfPositive(T::fromRaw(b))
+              .raw();
+      positiveAgrees = positive == r && mathErrors() == flags;
+    }
     if (r != reference || flags != referenceFlags || r != divided ||
-        flags != dividedFlags || r != wrapped || flags != wrappedFlags) {
+        flags != dividedFlags || r != wrapped || flags != wrappedFlags ||
+        !positiveAgrees) {
       printFailure(Serial, F("reciprocal"), long(T::kTotalBits), long(b),
                    long(r));
       return false;

@@ -376,40 +376,43 @@ class Fixed {
   // while stepping then links neither the fast divide nor its table.
   // Portable, and the same code on every target.
   // Inlined, so that what the caller knows of b (a mass is positive)
-  // drops the tests it makes unnecessary; the loop is out of line.
+  // drops the tests it makes unnecessary; the rest is out of line.
   TINYPARTICLE_ALWAYS_INLINE static Raw compactReciprocal(Raw b) {
     if (b == 0) return divideByZero(kRawOne);
     const bool negative = b < 0;
-    const URaw d = magnitude(b);
-    // The quotient reaches 2^bits (saturated whatever its sign) exactly
-    // when d <= 2^(2 FracBits - bits).
-    if (d <= kSaturatingDivisor) return overflow(negative);
-    const URaw q = reciprocalMagnitude(d);
-    if (q > URaw(URaw(kRawMax) + (negative ? 1u : 0u))) {
-      return overflow(negative);
-    }
-    if (!negative) return Raw(q);
-    return q > URaw(kRawMax) ? kRawMin : Raw(-Raw(q));
+    const URaw m = reciprocalMagnitude(magnitude(b), negative);
+    if (!negative) return Raw(m);
+    return m > URaw(kRawMax) ? kRawMin : Raw(-Raw(m));
   }
-  // round(2^(2 FracBits) / d), ties up, for d > kSaturatingDivisor (the
-  // result is then below 2^bits): long division, r the partial remainder
-  // doubled for the next digit (the numerator's single 1 is its start,
-  // the digits after it are zeros); r < 2d <= 2^bits, so it fits URaw, and
-  // the bits shifted out of q are zeros.
-  TINYPARTICLE_NOINLINE static URaw reciprocalMagnitude(URaw d) {
-    URaw q = 0;
-    URaw r = 1;
-    for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
-      q = URaw(q << 1);
-      if (r >= d) {
-        r = URaw(r - d);
-        q = URaw(q | 1u);
+  // |1 / b| for d = |b| > 0: round(2^(2 FracBits) / d), ties up, or, when
+  // that exceeds the range of the result's sign, the limit (kRawMax, or
+  // |kRawMin| when negative) and kOverflow. Long division: r is the partial
+  // remainder, doubled for the next digit (the numerator's single 1 is its
+  // start, the digits after it are zeros); r < 2d <= 2^bits, so it fits
+  // URaw.
+  TINYPARTICLE_NOINLINE static URaw reciprocalMagnitude(URaw d,
+                                                        bool negative) {
+    const URaw limit = URaw(URaw(kRawMax) + (negative ? 1u : 0u));
+    // The quotient reaches 2^bits exactly when d <= 2^(2 FracBits - bits);
+    // past that test the bits shifted out of q are zeros.
+    if (d > kSaturatingDivisor) {
+      URaw q = 0;
+      URaw r = 1;
+      for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
+        q = URaw(q << 1);
+        if (r >= d) {
+          r = URaw(r - d);
+          q = URaw(q | 1u);
+        }
+        r = URaw(r << 1);
       }
-      r = URaw(r << 1);
+      // r is now twice the remainder: round up when it reaches d, as the
+      // divide does (q + 1 stays below 2^bits, given the test above).
+      if (r >= d) q = URaw(q + 1u);
+      if (q <= limit) return q;
     }
-    // r is now twice the remainder: round up when it reaches d, as the
-    // divide does.
-    return r >= d ? URaw(q + 1u) : q;
+    detail::raiseMathError(MathError::kOverflow);
+    return limit;
   }
 
   static Raw referenceSquareRoot(Raw x) {
@@ -591,6 +594,20 @@ inline S compactReciprocal(S x) {
 template <uint8_t I, uint8_t F>
 TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocal(Fixed<I, F> x) {
   return Fixed<I, F>::fromRaw(Fixed<I, F>::compactReciprocal(x.raw()));
+}
+// The same for an x the caller knows to be positive (a step's dt): a
+// fixed-point format then skips the zero and sign cases. (x <= 0 breaks
+// the promise: the result is then meaningless.)
+template <typename S>
+inline S compactReciprocalOfPositive(S x) {
+  return S(1) / x;
+}
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocalOfPositive(
+    Fixed<I, F> x) {
+  typedef Fixed<I, F> T;
+  return T::fromRaw(typename T::Raw(
+      T::reciprocalMagnitude(typename T::URaw(x.raw()), false)));
 }
 }  // namespace detail
 

@@ -20,13 +20,11 @@ struct RodState {
   Solve rodSolver() const { return mSolveRods; }
   void setRodSolver(Solve solve) { mSolveRods = solve; }
   // 1 / dt, computed again only when dt changes: rarely, so the compact
-  // reciprocal (Math/Fixed.hpp) does it. The step refuses a dt <= 0; the
-  // test here only tells the compiler, which then drops the reciprocal's
-  // sign and zero cases.
+  // reciprocal (Math/Fixed.hpp) does it. dt > 0: the step refuses others.
   S inverseOf(S dt) {
     if (!(dt == mDt)) {
       mDt = dt;
-      mInverseDt = dt > S() ? detail::compactReciprocal(dt) : S();
+      mInverseDt = detail::compactReciprocalOfPositive(dt);
     }
     return mInverseDt;
   }
@@ -46,7 +44,7 @@ struct RodState<Solve, S, false> {
   void addRodBits(uint8_t) {}
   Solve rodSolver() const { return nullptr; }
   void setRodSolver(Solve) {}
-  S inverseOf(S dt) { return detail::compactReciprocal(dt); }
+  S inverseOf(S dt) { return detail::compactReciprocalOfPositive(dt); }
 };
 
 }  // namespace detail

@@ -161,8 +161,9 @@ class World
     static_assert(kParticles > 0,
                   "this World has no particle slot: World<S, Dim, particles, "
                   "forces, constraints, contacts> needs particles > 0");
+    ParticleType* const slots = detail::throughPointer(&particleAt(0));
     for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
+      ParticleType& p = slots[i];
       if (p.inUse()) continue;
       const uint8_t generation = p.generation;
       p = ParticleType();
@@ -535,8 +536,9 @@ class World
       return;
     }
     TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
+    ParticleType* const particles = detail::throughPointer(&particleAt(0));
     for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
+      ParticleType& p = particles[i];
       p.flags = detail::isZero(p.inverseMass)
                     ? uint8_t(p.flags | ParticleType::kStatic)
                     : uint8_t(p.flags & ~ParticleType::kStatic);
@@ -597,7 +599,7 @@ class World
       TINYPARTICLE_PROFILE_END(kProfileResolve);
     }
     if (kConstraints != 0) checkFiniteAfterContacts();
-    for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
+    for (uint8_t i = 0; i < kParticles; ++i) particles[i].acceleration = Vec();
     StepScalerStore::setStepScaler(nullptr);  // byDt ends with the step
     TINYPARTICLE_PROFILE_END(kProfileStep);
   }
@@ -913,7 +915,8 @@ class World
       }
     }
     Steps::template integrate<kConstraints == 0>(
-        &particleAt(0), kParticles, uniformStep, byDt, andMove, mError);
+        detail::throughPointer(&particleAt(0)), kParticles, uniformStep, byDt,
+        andMove, mError);
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
   }
 
