@@ -370,49 +370,48 @@ class Fixed {
   }
 
   // 1 / b, exactly as divide(kRawOne, b) gives it (rounding, saturation,
-  // flags; b = 0 as in divide()), from a bit-by-bit long division: a few
-  // dozen bytes of code, but about a thousand cycles on AVR. For set-up
-  // (an inverse mass, an inverse length): a sketch that never divides
-  // while stepping then links neither the fast divide nor its table.
-  // Portable, and the same code on every target.
-  // Inlined, so that what the caller knows of b (a mass is positive)
-  // drops the tests it makes unnecessary; the rest is out of line.
+  // flags; b = 0 as in divide()), from a bit-by-bit long division: 128
+  // bytes of code on AVR in Q16.16 where the fast divide and its table take
+  // about 1 KB, but several times its cycles. For set-up (an inverse mass,
+  // an inverse length): a sketch that never divides while stepping then
+  // links neither the fast divide nor its table. Portable, the same code
+  // on every target. Inlined, so that what the caller knows of b (a mass
+  // is positive) drops the tests it makes unnecessary; the loop is out of
+  // line.
   TINYPARTICLE_ALWAYS_INLINE static Raw compactReciprocal(Raw b) {
     if (b == 0) return divideByZero(kRawOne);
-    const bool negative = b < 0;
-    const URaw m = reciprocalMagnitude(magnitude(b), negative);
-    if (!negative) return Raw(m);
-    return m > URaw(kRawMax) ? kRawMin : Raw(-Raw(m));
-  }
-  // |1 / b| for d = |b| > 0: round(2^(2 FracBits) / d), ties up, or, when
-  // that exceeds the range of the result's sign, the limit (kRawMax, or
-  // |kRawMin| when negative) and kOverflow. Long division: r is the partial
-  // remainder, doubled for the next digit (the numerator's single 1 is its
-  // start, the digits after it are zeros); r < 2d <= 2^bits, so it fits
-  // URaw.
-  TINYPARTICLE_NOINLINE static URaw reciprocalMagnitude(URaw d,
-                                                        bool negative) {
-    const URaw limit = URaw(URaw(kRawMax) + (negative ? 1u : 0u));
-    // The quotient reaches 2^bits exactly when d <= 2^(2 FracBits - bits);
-    // past that test the bits shifted out of q are zeros.
-    if (d > kSaturatingDivisor) {
-      URaw q = 0;
-      URaw r = 1;
-      for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
-        q = URaw(q << 1);
-        if (r >= d) {
-          r = URaw(r - d);
-          q = URaw(q | 1u);
-        }
-        r = URaw(r << 1);
-      }
-      // r is now twice the remainder: round up when it reaches d, as the
-      // divide does (q + 1 stays below 2^bits, given the test above).
-      if (r >= d) q = URaw(q + 1u);
-      if (q <= limit) return q;
+    if (b > 0) return Raw(positiveReciprocal(URaw(b)));
+    const URaw d = magnitude(b);
+    // Below kLowestDivisor the quotient is out of range, at it exactly
+    // lowest(); above, its magnitude fits kRawMax.
+    if (d <= kLowestDivisor) {
+      return d == kLowestDivisor ? kRawMin : overflow(true);
     }
-    detail::raiseMathError(MathError::kOverflow);
-    return limit;
+    return Raw(-Raw(positiveReciprocal(d)));
+  }
+  // 1 / d for d > 0: round(2^(2 FracBits) / d), ties up, or kRawMax and
+  // kOverflow when that does not fit (d <= kLowestDivisor). Long
+  // division: r is the partial remainder, doubled for the next digit (the
+  // numerator's single 1 is its start, the digits after it are zeros); r <
+  // 2d <= 2^bits, so it fits URaw, and the quotient is below 2^(bits-1).
+  TINYPARTICLE_NOINLINE static URaw positiveReciprocal(URaw d) {
+    if (d <= kLowestDivisor) {
+      detail::raiseMathError(MathError::kOverflow);
+      return URaw(kRawMax);
+    }
+    URaw q = 0;
+    URaw r = 1;
+    for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
+      q = URaw(q << 1);
+      if (r >= d) {
+        r = URaw(r - d);
+        q = URaw(q | 1u);
+      }
+      r = URaw(r << 1);
+    }
+    // r is now twice the remainder: round up when it reaches d, as the
+    // divide does (the result stays within kRawMax: see kLowestDivisor).
+    return r >= d ? URaw(q + 1u) : q;
   }
 
   static Raw referenceSquareRoot(Raw x) {
@@ -476,12 +475,15 @@ class Fixed {
   // long is 32 bits on AVR, so these compares stay cheap there.
   static constexpr long kIntMax = long(kRawMax >> FracBits);
   static constexpr long kIntMin = -kIntMax - 1;
-  // compactReciprocal(): |b| up to this gives a quotient of 2^bits or more
-  // (0: none does, as in Q24.8).
-  static constexpr URaw kSaturatingDivisor =
-      2 * FracBits >= kTotalBits
-          ? URaw(URaw(1) << (2 * FracBits >= kTotalBits
-                                 ? 2 * FracBits - kTotalBits
+  // compactReciprocal(): the divisor d = 2^(2 FracBits - bits + 1) whose
+  // reciprocal is exactly 2^(bits-1) steps, |lowest()|; a smaller one gives
+  // more, a larger one at most kRawMax (rounding cannot reach 2^(bits-1)
+  // from below, as FracBits <= bits - 2). 0 where no divisor reaches it
+  // (Q24.8).
+  static constexpr URaw kLowestDivisor =
+      2 * FracBits + 1 >= kTotalBits
+          ? URaw(URaw(1) << (2 * FracBits + 1 >= kTotalBits
+                                 ? 2 * FracBits + 1 - kTotalBits
                                  : 0))
           : URaw(0);
 
@@ -607,7 +609,7 @@ TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocalOfPositive(
     Fixed<I, F> x) {
   typedef Fixed<I, F> T;
   return T::fromRaw(typename T::Raw(
-      T::reciprocalMagnitude(typename T::URaw(x.raw()), false)));
+      T::positiveReciprocal(typename T::URaw(x.raw()))));
 }
 }  // namespace detail
 

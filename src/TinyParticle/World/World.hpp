@@ -536,9 +536,8 @@ class World
       return;
     }
     TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
-    ParticleType* const particles = detail::throughPointer(&particleAt(0));
     for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particles[i];
+      ParticleType& p = particleAt(i);
       p.flags = detail::isZero(p.inverseMass)
                     ? uint8_t(p.flags | ParticleType::kStatic)
                     : uint8_t(p.flags & ~ParticleType::kStatic);
@@ -599,7 +598,7 @@ class World
       TINYPARTICLE_PROFILE_END(kProfileResolve);
     }
     if (kConstraints != 0) checkFiniteAfterContacts();
-    for (uint8_t i = 0; i < kParticles; ++i) particles[i].acceleration = Vec();
+    for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
     StepScalerStore::setStepScaler(nullptr);  // byDt ends with the step
     TINYPARTICLE_PROFILE_END(kProfileStep);
   }
