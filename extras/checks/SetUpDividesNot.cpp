@@ -1,17 +1,18 @@
 // Linked for the ATmega328P by `make -C extras/checks nodivide`: a scene
-// whose step never divides (particles under gravity and drag, set up with
-// masses) links neither the fast divide (avrDivideQ16) nor anything that
-// calls it: the set-up's inverse masses come from the compact reciprocal
-// (Fixed::compactReciprocal), which must be linked. A spring divides in
-// its step: a second program with one must link the fast divide, so the
-// check can tell. Inputs and outputs are registers, so nothing is folded.
+// whose step never divides (particles under gravity, drag and buoyancy,
+// set up with masses) links neither the fast divide (avrDivideQ16) nor any
+// float routine: the set-up's inverse masses and buoyancy's constants come
+// from fixed point and the compact reciprocal (Fixed::compactReciprocal),
+// which must be linked. A spring divides in its step: a second program
+// with one must link the fast divide, so the check can tell. Inputs and
+// outputs are registers, so nothing is folded.
 #include <avr/io.h>
 
 #include "TinyParticle.hpp"
 
 using namespace tinyparticle;
 typedef Q16_16 S;
-typedef World<S, 2, 2, 3> W;
+typedef World<S, 2, 2, 4> W;
 
 W world;
 
@@ -24,6 +25,7 @@ int main() {
   const ParticleId b = world.addParticle(W::Vec(input(9), input(8)), input(11));
   world.addGravity();
   world.addDrag(input(4), input(5));
+  world.addBuoyancy(input(6), input(7), input(3), input(16));
 #if WITH_SPRING
   world.addSpring(a, b, input(12), input(10));
 #else
