@@ -151,11 +151,14 @@ struct ParticleSteps {
   // the position before the move would need a copy of it for every
   // particle and step: +300 cycles each on the Nano, measured.)
   TINYPARTICLE_NOINLINE static void nonFinitePosition(P& p, uint16_t& error) {
-    for (uint8_t k = 0; k < Dim; ++k) {
-      S& x = p.position[k];
-      if (isNonFinite(x)) x = finiteLimit(x);
-    }
+    saturateNonFinite(p.position.x);
+    saturateNonFinite(p.position.y);
+    if (Dim == 3) saturateNonFinite(p.position[2]);
     nonFinite(p, error);
+  }
+  // One component, out of line: a call is smaller than a copy per axis.
+  TINYPARTICLE_NOINLINE static void saturateNonFinite(S& x) {
+    if (isNonFinite(x)) x = finiteLimit(x);
   }
 
   // What a non-finite component saturates to: +-largest() for an
