@@ -286,8 +286,8 @@ class World
   // Buoyancy under a water surface at height `surface` (m, along y), for
   // bodies of half-height maxDepth (m, > 0) and the given volume (m^3), in a
   // liquid of the given density (kg/m^3; water 1000). For every particle or
-  // one. The full force density * volume * 9.81 is computed once, in float
-  // (on every platform).
+  // one. The full force density * volume * 9.81 is computed once: in fixed
+  // point for a fixed scalar, in float for Float (Forces/Buoyancy.hpp).
   ForceId addBuoyancy(S surface, S maxDepth, S volume, S density) {
     BuoyancyForce<S, Dim> buoyancy;
     if (!BuoyancyForce<S, Dim>::make(buoyancy, surface, maxDepth, volume,
