@@ -914,8 +914,7 @@ class World
       }
     }
     Steps::template integrate<kConstraints == 0>(
-        detail::throughPointer(&particleAt(0)), kParticles, uniformStep, byDt,
-        andMove, mError);
+        &particleAt(0), kParticles, uniformStep, byDt, andMove, mError);
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
   }
 
