@@ -182,6 +182,41 @@ test(BuoyancyFloats_Float) {
   assertLessOrEqual(speed, 0.001f);
 }
 
+// Buoyancy's set-up in Q16.16 is fixed point (no float routine): 1 / (2
+// depth) within 1 step of the exact value of its (rounded) input, and the
+// full force density * volume * 9.81 within half a step per rounding: when
+// density * 9.81 is formed first, 0.5 |volume| + 0.5 steps; when density *
+// volume is (density above 3276 kg/m^3), 0.5 * 9.81 + 0.5; plus 9.81's own
+// rounding in Q16.16, 2.5e-7 of the force. Each compared with the exact
+// value for the rounded inputs, computed in float: the bound adds float's
+// own errors (6e-8 of the value per rounding, the result's conversion to
+// float included). No flag is raised.
+test(BuoyancySetUpIsFixedPoint_Q16_16) {
+  typedef Q16_16 S;
+  typedef BuoyancyForce<S, 2> B;
+  static const float kCases[][4] = {
+      // half-height, volume, density, bound in steps for the force
+      {0.05f, 0.001f, 1000.0f, 0.51f},   // ForcesTest's body in water
+      {0.03f, 0.0001f, 1000.0f, 0.51f},  // the memory ladder's
+      {0.01f, 0.0001f, 13534.0f, 5.41f}, // mercury: the other order
+      {2.0f, 0.5f, 1.2f, 0.75f},         // a balloon in air
+      {0.001f, 3.0f, -800.0f, 2.0f}};    // a negative density
+  const float step = 1.0f / 65536;
+  for (uint8_t i = 0; i < sizeof(kCases) / sizeof(kCases[0]); ++i) {
+    const S depth(kCases[i][0]), volume(kCases[i][1]), density(kCases[i][2]);
+    B b;
+    clearMathErrors();
+    assertTrue(B::make(b, S(0), depth, volume, density));
+    assertEqual(mathErrors(), (uint8_t) 0);
+    const float inverse = 0.5f / depth.toFloat();
+    assertNear(b.invTwiceDepth.toFloat(), inverse,
+               step + fabs(inverse) * 1.2e-7f);
+    const float force = density.toFloat() * volume.toFloat() * 9.81f;
+    assertNear(b.fullForce.toFloat(), force,
+               kCases[i][3] * step + fabs(force) * (2.5e-7f + 1.8e-7f));
+  }
+}
+
 // k1 v + k2 v^2 = m g: v = (-k1 + sqrt(k1^2 + 4 k2 m g)) / (2 k2) = 7.7154
 // m/s. The step's fixed point is exactly that speed; 0.1 %.
 test(DragTerminalVelocity_Q16_16) {

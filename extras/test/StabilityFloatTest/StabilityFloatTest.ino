@@ -75,6 +75,32 @@ test(ContactsThatDivergeAreFlagged_Float) {
   assertTrue(q.velocity == V());
 }
 
+// A position set to inf or NaN from outside: the move finds it, each such
+// component saturates (+inf to largest(), -inf to lowest(), a NaN of
+// either sign to 0), the finite one stays, the particle stops and the
+// world is flagged.
+test(NonFinitePositionSaturates_Float) {
+  World<Float, 2, 2> w;
+  ParticleId a = w.addParticle(V(0.0, 1.0), Float(1));
+  ParticleId b = w.addParticle(V(0.0, 0.0), Float(1));
+  w.particle(a)->position.x = Float(INFINITY);
+  w.particle(a)->velocity = V(1.0, 0.0);
+  w.particle(b)->position = V(Float(-INFINITY), Float(-NAN));
+  w.particle(b)->velocity = V(1.0, 1.0);
+  w.step(Float(1.0 / 256));
+  assertEqual((int) w.error(), (int) WorldError::kNonFinite);
+  assertTrue(w.particle(a)->position == V(Float::largest(), Float(1.0)));
+  assertTrue(w.particle(b)->position == V(Float::lowest(), Float(0.0)));
+  assertTrue(w.particle(a)->velocity == V());
+  assertTrue(w.particle(b)->velocity == V());
+  w.clearError();
+  w.particle(b)->position.y = Float(NAN);
+  w.particle(b)->velocity = V(0.0, 1.0);
+  w.step(Float(1.0 / 256));
+  assertEqual((int) w.error(), (int) WorldError::kNonFinite);
+  assertTrue(w.particle(b)->position == V(Float::lowest(), Float(0.0)));
+}
+
 // step(dt <= 0) does nothing and raises kBadArgument (-0 and NaN too).
 test(NonPositiveDtIsRefused_Float) {
   W w;

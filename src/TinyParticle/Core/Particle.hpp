@@ -67,7 +67,9 @@ struct Particle {
   bool isResting() const { return (flags & (kStatic | kAsleep)) != 0; }
 
   // Mass in kg; an immovable particle reports S::largest().
-  S mass() const { return isImmovable() ? S::largest() : S(1) / inverseMass; }
+  S mass() const {
+    return isImmovable() ? S::largest() : detail::compactReciprocal(inverseMass);
+  }
 
   void setCollides(bool on) {
     flags = on ? uint8_t(flags | kCollides) : uint8_t(flags & ~kCollides);

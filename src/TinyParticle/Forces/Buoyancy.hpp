@@ -13,6 +13,8 @@
 
 #include "../Core/Generator.hpp"
 #include "../Core/Particle.hpp"
+#include "../Math/Fixed.hpp"
+#include "../Math/Scaler.hpp"
 
 namespace tinyparticle {
 
@@ -26,16 +28,40 @@ struct BuoyancyForce {
   S fullForce;      // density * volume * g, N
 
   // False (nothing set) for a maxDepth that is not positive. The full force
-  // density * volume * 9.81 is computed once, in float on every platform,
-  // so that the bits are the same everywhere.
+  // density * volume * 9.81 and 1 / (2 maxDepth) are computed once, the
+  // same bits on every platform: in float for a float scalar, in fixed
+  // point for a fixed one (a fixed-point sketch links no float routine for
+  // them; see setUp()).
   static bool make(BuoyancyForce& out, S surface, S maxDepth, S volume,
                    S density) {
     if (maxDepth <= S()) return false;
     out.surface = surface;
     out.maxDepth = maxDepth;
-    out.invTwiceDepth = S(0.5f / maxDepth.toFloat());
-    out.fullForce = S(density.toFloat() * volume.toFloat() * 9.81f);
+    setUp(out, maxDepth, volume, density);
     return true;
+  }
+
+  // Float (and any other scalar): in float.
+  template <typename T>
+  static void setUp(BuoyancyForce& out, T maxDepth, T volume, T density) {
+    out.invTwiceDepth = T(0.5f / maxDepth.toFloat());
+    out.fullForce = T(density.toFloat() * volume.toFloat() * 9.81f);
+  }
+  // Fixed point: 1 / (2 maxDepth) within one step (the compact reciprocal,
+  // halved), and the full force within a few steps: density * 9.81 first,
+  // whose rounding then shrinks with the (usually small) volume, unless
+  // that product could leave the range (|density| above a tenth of the
+  // largest value), then density * volume first.
+  template <uint8_t I, uint8_t F>
+  static void setUp(BuoyancyForce& out, Fixed<I, F> maxDepth,
+                    Fixed<I, F> volume, Fixed<I, F> density) {
+    typedef Fixed<I, F> T;
+    out.invTwiceDepth = detail::half(detail::compactReciprocal(maxDepth));
+    const T g(9.81);
+    const T limit = T::fromRaw(T::kRawMax / 10);
+    out.fullForce = density <= limit && -limit <= density
+                        ? (density * g) * volume
+                        : (density * volume) * g;
   }
 
   void apply(Particle<S, Dim>& p, S) const {

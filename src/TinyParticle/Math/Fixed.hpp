@@ -369,6 +369,51 @@ class Fixed {
     return fromMagnitude(quotient, (a < 0) != (b < 0));
   }
 
+  // 1 / b, exactly as divide(kRawOne, b) gives it (rounding, saturation,
+  // flags; b = 0 as in divide()), from a bit-by-bit long division: 128
+  // bytes of code on AVR in Q16.16 where the fast divide and its table take
+  // about 1 KB, but several times its cycles. For set-up (an inverse mass,
+  // an inverse length): a sketch that never divides while stepping then
+  // links neither the fast divide nor its table. Portable, the same code
+  // on every target. Inlined, so that what the caller knows of b (a mass
+  // is positive) drops the tests it makes unnecessary; the loop is out of
+  // line.
+  TINYPARTICLE_ALWAYS_INLINE static Raw compactReciprocal(Raw b) {
+    if (b == 0) return divideByZero(kRawOne);
+    if (b > 0) return Raw(positiveReciprocal(URaw(b)));
+    const URaw d = magnitude(b);
+    // Below kLowestDivisor the quotient is out of range, at it exactly
+    // lowest(); above, its magnitude fits kRawMax.
+    if (d <= kLowestDivisor) {
+      return d == kLowestDivisor ? kRawMin : overflow(true);
+    }
+    return Raw(-Raw(positiveReciprocal(d)));
+  }
+  // 1 / d for d > 0: round(2^(2 FracBits) / d), ties up, or kRawMax and
+  // kOverflow when that does not fit (d <= kLowestDivisor). Long
+  // division: r is the partial remainder, doubled for the next digit (the
+  // numerator's single 1 is its start, the digits after it are zeros); r <
+  // 2d <= 2^bits, so it fits URaw, and the quotient is below 2^(bits-1).
+  TINYPARTICLE_NOINLINE static URaw positiveReciprocal(URaw d) {
+    if (d <= kLowestDivisor) {
+      detail::raiseMathError(MathError::kOverflow);
+      return URaw(kRawMax);
+    }
+    URaw q = 0;
+    URaw r = 1;
+    for (uint8_t i = 0; i <= 2 * FracBits; ++i) {
+      q = URaw(q << 1);
+      if (r >= d) {
+        r = URaw(r - d);
+        q = URaw(q | 1u);
+      }
+      r = URaw(r << 1);
+    }
+    // r is now twice the remainder: round up when it reaches d, as the
+    // divide does (the result stays within kRawMax: see kLowestDivisor).
+    return r >= d ? URaw(q + 1u) : q;
+  }
+
   static Raw referenceSquareRoot(Raw x) {
     if (x < 0) return negativeSqrt();
     // sqrt(raw / 2^F) * 2^F = sqrt(raw * 2^F): an integer square root.
@@ -430,6 +475,17 @@ class Fixed {
   // long is 32 bits on AVR, so these compares stay cheap there.
   static constexpr long kIntMax = long(kRawMax >> FracBits);
   static constexpr long kIntMin = -kIntMax - 1;
+  // compactReciprocal(): the divisor d = 2^(2 FracBits - bits + 1) whose
+  // reciprocal is exactly 2^(bits-1) steps, |lowest()|; a smaller one gives
+  // more, a larger one at most kRawMax (rounding cannot reach 2^(bits-1)
+  // from below, as FracBits <= bits - 2). 0 where no divisor reaches it
+  // (Q24.8).
+  static constexpr URaw kLowestDivisor =
+      2 * FracBits + 1 >= kTotalBits
+          ? URaw(URaw(1) << (2 * FracBits + 1 >= kTotalBits
+                                 ? 2 * FracBits + 1 - kTotalBits
+                                 : 0))
+          : URaw(0);
 
   static Raw divideByZero(Raw a) {
     detail::raiseMathError(MathError::kDivideByZero);
@@ -526,6 +582,35 @@ struct FixedFast {
   // x >= 0 (Fixed::squareRoot handled it).
   static Raw squareRoot(Raw x) { return T::referenceSquareRoot(x); }
 };
+}  // namespace detail
+
+namespace detail {
+// 1 / x, the same value and flags as S(1) / x, from code that is small
+// rather than fast (Fixed::compactReciprocal): for set-up, where a divide
+// would link the fast divide into a sketch that never divides in a step.
+// Other scalars divide.
+template <typename S>
+inline S compactReciprocal(S x) {
+  return S(1) / x;
+}
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocal(Fixed<I, F> x) {
+  return Fixed<I, F>::fromRaw(Fixed<I, F>::compactReciprocal(x.raw()));
+}
+// The same for an x the caller knows to be positive (a step's dt): a
+// fixed-point format then skips the zero and sign cases. (x <= 0 breaks
+// the promise: the result is then meaningless.)
+template <typename S>
+inline S compactReciprocalOfPositive(S x) {
+  return S(1) / x;
+}
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocalOfPositive(
+    Fixed<I, F> x) {
+  typedef Fixed<I, F> T;
+  return T::fromRaw(typename T::Raw(
+      T::positiveReciprocal(typename T::URaw(x.raw()))));
+}
 }  // namespace detail
 
 // The formats the library names. Q16_16 is the default fixed type.

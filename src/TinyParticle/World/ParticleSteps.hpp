@@ -18,6 +18,13 @@
 namespace tinyparticle {
 namespace detail {
 
+// ParticleSteps<Float, Dim>::finiteLimit(): x is infinite or NaN.
+inline Float finiteLimitOfFloat(Float x) {
+  const uint32_t bits = floatBits(x);
+  if ((bits & 0x007FFFFFul) != 0) return Float();  // NaN
+  return (bits & 0x80000000ul) != 0 ? Float::lowest() : Float::largest();
+}
+
 template <typename S, uint8_t Dim>
 struct ParticleSteps {
   typedef Particle<S, Dim> P;
@@ -144,12 +151,21 @@ struct ParticleSteps {
   // the position before the move would need a copy of it for every
   // particle and step: +300 cycles each on the Nano, measured.)
   TINYPARTICLE_NOINLINE static void nonFinitePosition(P& p, uint16_t& error) {
-    for (uint8_t k = 0; k < Dim; ++k) {
-      S& x = p.position[k];
-      if (!isNonFinite(x)) continue;
-      x = x > S() ? S::largest() : (x < S() ? S::lowest() : S());
-    }
+    saturateNonFinite(p.position.x);
+    saturateNonFinite(p.position.y);
+    if (Dim == 3) saturateNonFinite(p.position[2]);
     nonFinite(p, error);
+  }
+  // One component, out of line: a call is smaller than a copy per axis.
+  TINYPARTICLE_NOINLINE static void saturateNonFinite(S& x) {
+    if (isNonFinite(x)) x = finiteLimit(x);
+  }
+
+  // What a non-finite component saturates to: +-largest() for an
+  // infinity, 0 for a NaN (for Float from the sign bit and the mantissa:
+  // no float compare, which is a library call on AVR).
+  static S finiteLimit(S x) {
+    return x > S() ? S::largest() : (x < S() ? S::lowest() : S());
   }
 
   // One axis of a step: v += a dt + (uniform a) dt, then x += v dt. Zeros
@@ -169,6 +185,15 @@ struct ParticleSteps {
     if (!isZero(velocity)) position += byDt(velocity);
   }
 };
+
+template <>
+inline Float ParticleSteps<Float, 2>::finiteLimit(Float x) {
+  return finiteLimitOfFloat(x);
+}
+template <>
+inline Float ParticleSteps<Float, 3>::finiteLimit(Float x) {
+  return finiteLimitOfFloat(x);
+}
 
 }  // namespace detail
 }  // namespace tinyparticle

@@ -6,6 +6,8 @@
 
 #include <stdint.h>
 
+#include "../Math/Fixed.hpp"
+
 namespace tinyparticle {
 namespace detail {
 
@@ -17,11 +19,12 @@ struct RodState {
   void addRodBits(uint8_t bits) { mRodBits |= bits; }
   Solve rodSolver() const { return mSolveRods; }
   void setRodSolver(Solve solve) { mSolveRods = solve; }
-  // 1 / dt, divided again only when dt changes.
+  // 1 / dt, computed again only when dt changes: rarely, so the compact
+  // reciprocal (Math/Fixed.hpp) does it. dt > 0: the step refuses others.
   S inverseOf(S dt) {
     if (!(dt == mDt)) {
       mDt = dt;
-      mInverseDt = S(1) / dt;
+      mInverseDt = detail::compactReciprocalOfPositive(dt);
     }
     return mInverseDt;
   }
@@ -41,7 +44,7 @@ struct RodState<Solve, S, false> {
   void addRodBits(uint8_t) {}
   Solve rodSolver() const { return nullptr; }
   void setRodSolver(Solve) {}
-  S inverseOf(S dt) { return S(1) / dt; }
+  S inverseOf(S dt) { return detail::compactReciprocalOfPositive(dt); }
 };
 
 }  // namespace detail

@@ -146,7 +146,10 @@ class World
       mError |= WorldError::kBadArgument;
       return ParticleId();
     }
-    return addWithInverseMass(position, S(1) / mass, radius);
+    // Set-up: the compact reciprocal, so that a scene whose step never
+    // divides links no fast divide (Math/Fixed.hpp).
+    return addWithInverseMass(position, detail::compactReciprocal(mass),
+                              radius);
   }
 
   // An immovable particle (inverse mass 0): pivots and anchors.
@@ -158,8 +161,9 @@ class World
     static_assert(kParticles > 0,
                   "this World has no particle slot: World<S, Dim, particles, "
                   "forces, constraints, contacts> needs particles > 0");
+    ParticleType* const slots = detail::throughPointer(&particleAt(0));
     for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
+      ParticleType& p = slots[i];
       if (p.inUse()) continue;
       const uint8_t generation = p.generation;
       p = ParticleType();
@@ -282,8 +286,8 @@ class World
   // Buoyancy under a water surface at height `surface` (m, along y), for
   // bodies of half-height maxDepth (m, > 0) and the given volume (m^3), in a
   // liquid of the given density (kg/m^3; water 1000). For every particle or
-  // one. The full force density * volume * 9.81 is computed once, in float
-  // (on every platform).
+  // one. The full force density * volume * 9.81 is computed once: in fixed
+  // point for a fixed scalar, in float for Float (Forces/Buoyancy.hpp).
   ForceId addBuoyancy(S surface, S maxDepth, S volume, S density) {
     BuoyancyForce<S, Dim> buoyancy;
     if (!BuoyancyForce<S, Dim>::make(buoyancy, surface, maxDepth, volume,
@@ -413,7 +417,7 @@ class World
       return false;
     }
     link->length = length;
-    link->inverseLength = S(1) / length;
+    link->inverseLength = detail::compactReciprocal(length);
     return true;
   }
 
