@@ -1,4 +1,4 @@
-// The multiply-only reciprocal, inverse square root, unit vector and turn
+// The multiply-only inverse square root, unit vector and turn
 // factor of Math/Newton.hpp, against the exact values (double on the host,
 // float on the Nano: both far finer than the bounds), on every input class
 // they distinguish: each leading-bit position of the argument and its
@@ -11,7 +11,7 @@
 // about 2.5 units, and a reduction downwards rounds q by up to 2^-15
 // relatively, 2^-16 in the root: 5 units of 2^-16 relative in all.
 // Scaling back by 2^k keeps the relative error, and its halvings round:
-// one unit more. The reciprocal (a long division) equals the divide.
+// one unit more.
 // A unit vector: each component within 3 units (the inverse square root's
 // relative error on components below 1, plus the product's rounding). The
 // turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or two
@@ -26,7 +26,6 @@
 using aunit::TestRunner;
 using tinyparticle::detail::inverseSqrt;
 using tinyparticle::detail::normalizeByMultiplies;
-using tinyparticle::detail::reciprocal;
 using tinyparticle::detail::turnDropFactor;
 
 typedef Q16_16 T;
@@ -53,18 +52,6 @@ static void checkInverseSqrt(Raw q) {
   const double want = 1.0 / sqrt(valueOf(T::fromRaw(q)));
   if (fabs(valueOf(y) - want) > 5 * kUnit * want + kUnit) {
     fail(F("inverseSqrt"), valueOf(T::fromRaw(q)), valueOf(y), want);
-  }
-}
-
-// The reciprocal is the divide's 1 / x, bit for bit, flags included.
-static void checkReciprocal(Raw x) {
-  clearMathErrors();
-  const Raw r = reciprocal(T::fromRaw(x)).raw();
-  const uint8_t flags = mathErrors();
-  clearMathErrors();
-  const Raw want = T::referenceDivide(T::kRawOne, x);
-  if (r != want || flags != mathErrors()) {
-    fail(F("reciprocal"), valueOf(T::fromRaw(x)), r, want);
   }
 }
 
@@ -117,19 +104,6 @@ test(inverseSqrtAtEveryLeadingBit) {
   assertTrue(inverseSqrt(T::lowest()) == T(0));
   assertTrue(inverseSqrt(T(4)) == T(0.5));
   assertEqual(mathErrors(), (uint8_t)0);
-}
-
-test(reciprocalAtEveryLeadingBit) {
-  gFailures = 0;
-  FOR_EACH_LEADING_BIT(checkReciprocal);
-  assertEqual(gFailures, (uint16_t)0);
-  assertTrue(reciprocal(T(0)) == T(0));
-  assertTrue(reciprocal(T(-2)) == T(0));
-  // Beyond the format: saturated, flagged.
-  clearMathErrors();
-  assertTrue(reciprocal(T::epsilon()) == T::largest());
-  assertEqual(mathErrors(), (uint8_t)MathError::kOverflow);
-  clearMathErrors();
 }
 
 test(unitVectorsAtEveryLeadingBit) {

@@ -258,9 +258,12 @@ struct LoneRods {
   // A rod with two movable ends (a free dumbbell, or a world of one
   // constraint slot whose rod joins two movable particles): the change of
   // their relative speed is shared in the ratio of the inverse masses, a's
-  // share w_a / (w_a + w_b) and b's the rest. Out of line: rare.
+  // share w_a / (w_a + w_b) and b's the rest. Out of line: rare. Through
+  // the compact reciprocal (rounded twice: a unit at most), so that a world
+  // whose step never divides elsewhere (the lever) links no fast divide.
   static S shareOfA(const P& a, const P& b) {
-    return a.inverseMass / (a.inverseMass + b.inverseMass);
+    return a.inverseMass *
+           detail::compactReciprocalOfPositive(a.inverseMass + b.inverseMass);
   }
   // The change `speed` of the relative speed along u, and the move
   // `error` along it, shared between the two ends.

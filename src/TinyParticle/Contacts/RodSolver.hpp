@@ -105,12 +105,13 @@ struct RodSolver {
   static void generate(W&, Slot&, uint8_t) {}
 
   // A rod just added: its length's inverse and its first direction. False
-  // (nothing set) for a length that is not positive. Multiplies only
-  // (Math/Newton.hpp): a world whose step never divides links no divide.
+  // (nothing set) for a length that is not positive. The compact
+  // reciprocal and Newton's unit vector (Math/Newton.hpp): a world whose
+  // step never divides links no fast divide.
   static bool start(W& world, Slot& s) {
     typename W::LinkParamsType& link = linkOf(s);
     if (!(link.length > S())) return false;
-    link.inverseLength = detail::reciprocal(link.length);
+    link.inverseLength = detail::compactReciprocalOfPositive(link.length);
     V d = span(world, s);
     // Ends that coincide have no direction: any will do (as for colliding
     // balls), and the rod pushes them apart along it. (With none, they

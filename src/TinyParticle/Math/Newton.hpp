@@ -1,20 +1,19 @@
-// Reciprocals, square roots and unit vectors from multiplies only (Fixed).
+// Inverse square roots and unit vectors from multiplies only (Fixed).
 //
 // A scene whose step never divides should not link the divide and the
 // square root (about 1.7 KB of code and tables in Q16.16) for work done at
-// set-up or on a rare path: a rod's 1 / L and first direction, the exact
-// length of a rod that turned fast, a direction renormalised after a fast
-// turn. For Fixed, 1 / x is a long division (small, slow, exact), and
-// 1 / sqrt(x) takes Newton's iterations from a first guess:
+// set-up or on a rare path: a rod's first direction, the exact length of a
+// rod that turned fast, a direction renormalised after a fast turn (a
+// rod's 1 / L is Fixed's compact reciprocal, a long division: Fixed.hpp).
+// For Fixed, 1 / sqrt(x) takes Newton's iterations from a first guess:
 // - the argument is brought into [1/2, 2) by powers of 4 (exact upwards;
 //   downwards, in fixed point, each halving rounds);
 // - a parabola gives the first guess of 1 / sqrt(q), within 2.6 %;
 // - each Newton step squares the relative error: two leave 1.5e-6.
 // In Q16.16 the inverse square root is within 5 units of 2^-16 relative
 // plus one unit (extras/test/NewtonTest checks it on every leading-bit
-// position). The reciprocal is a long division, exact.
-// Slower than the divide and the square root (about a dozen multiplies,
-// or a long division): for set-up and rare paths, not for every step.
+// position). Slower than the square root (about a dozen multiplies): for
+// set-up and rare paths, not for every step.
 #pragma once
 
 #include <stdint.h>
@@ -63,41 +62,6 @@ TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrt(Fixed<I, F> q) {
   for (; doublings > 0; --doublings) y += y;
   for (; doublings < 0; ++doublings) y = half(y);
   return y;
-}
-
-// 1 / x for x > 0: the divide.
-template <typename S>
-inline S reciprocal(S x) {
-  return S(1) / x;
-}
-// Fixed (x <= 0 gives 0): exactly the divide's 1 / x (rounded to nearest, ties away;
-// beyond the format it saturates and raises MathError::kOverflow), from a
-// long division one bit at a time: a few dozen bytes, about a thousand
-// cycles on AVR. (A rod's 1 / L must be exact: a short Q16.16 pendulum's
-// energy error grew from 0.6 % to 1.4 % with a reciprocal a few units
-// off.)
-template <uint8_t I, uint8_t F>
-TINYPARTICLE_NOINLINE Fixed<I, F> reciprocal(Fixed<I, F> x) {
-  typedef Fixed<I, F> T;
-  typedef typename T::URaw U;
-  if (!isPositive(x)) return T();
-  const U d = U(x.raw());
-  const U top = U(U(1) << (I + F - 1));
-  // 2^(2F) / d: the numerator's single one bit comes in first, then
-  // zeros. r < d < top, so 2r + 1 fits U.
-  U q = 0, r = 0;
-  for (uint8_t i = 0; i <= 2 * F; ++i) {
-    if ((q & top) != 0) return T::fromRaw(T::overflow(false));
-    q = U(q << 1);
-    r = U(U(r << 1) | (i == 0 ? 1u : 0u));
-    if (r >= d) {
-      r = U(r - d);
-      q = U(q | 1u);
-    }
-  }
-  if (r >= U(d - r)) q = U(q + 1u);  // twice the remainder reaches d
-  if (q >= top) return T::fromRaw(T::overflow(false));
-  return T::fromRaw(typename T::Raw(q));
 }
 
 // v scaled to unit length; false (v unchanged) for a zero vector.
