@@ -176,7 +176,7 @@ struct LoneRods {
   static void rattle(W& world, Slot& s, bool unit) {
     const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
     if (moving == 0) return;
-    setDirection(Rods::span(world, s), Rods::linkOf(s), unit);
+    Rods::setDirection(Rods::span(world, s), Rods::linkOf(s), unit);
     if (kTwoMovable && moving == 2) {
       rattleBoth(world, s);
       return;
@@ -186,50 +186,6 @@ struct LoneRods {
     removeRadial(end.velocity, Rods::linkOf(s).direction);
   }
 
-  // A rod's direction from its span d: the chains' setDirection()
-  // (Contacts/RodSolver.hpp), d / L near its length, one Newton step
-  // toward unit length after a fast turn (`unit`), but normalised by
-  // multiplies only where d is far from its length (Math/Newton.hpp).
-  static void setDirection(const Vec<S, 2>& d, typename W::LinkParamsType& link,
-                           bool unit) {
-    const S invL = link.inverseLength;
-    S x = d.x * invL, y = d.y * invL;
-    if (unit) {
-      const S q = x * x + y * y;
-      if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
-        const S k = S(1.5) - detail::half(q);
-        link.direction.x = x * k;
-        link.direction.y = y * k;
-        return;
-      }
-    } else {
-      // As in the chains' setDirection(): lengths between 0.7 and 1.12.
-      const S ax = fabs(x), ay = fabs(y);
-      const S sum = ax + ay;
-      if (ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
-          sum > S(1 - 1.0 / 64) && sum < S(1.5)) {
-        link.direction.x = x;
-        link.direction.y = y;
-        return;
-      }
-    }
-    normalizeInto(d, link);
-  }
-  static void setDirection(const Vec<S, 3>& d, typename W::LinkParamsType& link,
-                           bool unit) {
-    V scaled = d * link.inverseLength;
-    const S q = scaled.magnitudeSquared();
-    if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
-      if (unit) scaled *= S(1.5) - detail::half(q);
-      link.direction = scaled;
-    } else {
-      normalizeInto(d, link);
-    }
-  }
-  // Ends that coincide keep the old direction.
-  static void normalizeInto(V d, typename W::LinkParamsType& link) {
-    if (detail::normalizeByMultiplies(d)) link.direction = d;
-  }
 
   // How many ends of the rod move: 0, 1 or 2 (at most 1 without
   // kTwoMovable: b is an anchor, or the world's rods each have one

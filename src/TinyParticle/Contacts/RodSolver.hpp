@@ -489,8 +489,10 @@ struct RodSolver {
       normalizeInto(d, link);
     }
   }
+  // By multiplies (Math/Newton.hpp), as start() normalises: one unit
+  // vector routine linked, and none that takes a square root or divides.
   static void normalizeInto(V d, typename W::LinkParamsType& link) {
-    if (d.normalize()) link.direction = d;
+    if (detail::normalizeByMultiplies(d)) link.direction = d;
     // else the ends coincide: keep the old direction
   }
 
