@@ -582,9 +582,7 @@ struct FixedFast {
   // x >= 0 (Fixed::squareRoot handled it).
   static Raw squareRoot(Raw x) { return T::referenceSquareRoot(x); }
 };
-}  // namespace detail
 
-namespace detail {
 // 1 / x, the same value and flags as S(1) / x, from code that is small
 // rather than fast (Fixed::compactReciprocal): for set-up, where a divide
 // would link the fast divide into a sketch that never divides in a step.

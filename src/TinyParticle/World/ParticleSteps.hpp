@@ -18,8 +18,15 @@
 namespace tinyparticle {
 namespace detail {
 
-// ParticleSteps<Float, Dim>::finiteLimit(): x is infinite or NaN.
-inline Float finiteLimitOfFloat(Float x) {
+// What a non-finite component x saturates to: +-largest() for an
+// infinity, 0 for a NaN.
+template <typename S>
+inline S finiteLimit(S x) {
+  return x > S() ? S::largest() : (x < S() ? S::lowest() : S());
+}
+// Float: from the sign bit and the mantissa, with no float compare (a
+// library call on AVR).
+inline Float finiteLimit(Float x) {
   const uint32_t bits = floatBits(x);
   if ((bits & 0x007FFFFFul) != 0) return Float();  // NaN
   return (bits & 0x80000000ul) != 0 ? Float::lowest() : Float::largest();
@@ -161,13 +168,6 @@ struct ParticleSteps {
     if (isNonFinite(x)) x = finiteLimit(x);
   }
 
-  // What a non-finite component saturates to: +-largest() for an
-  // infinity, 0 for a NaN (for Float from the sign bit and the mantissa:
-  // no float compare, which is a library call on AVR).
-  static S finiteLimit(S x) {
-    return x > S() ? S::largest() : (x < S() ? S::lowest() : S());
-  }
-
   // One axis of a step: v += a dt + (uniform a) dt, then x += v dt. Zeros
   // are skipped: an accumulator is usually empty (gravity is uniform) and
   // resting particles have no velocity, and a compare costs far less than
@@ -185,15 +185,6 @@ struct ParticleSteps {
     if (!isZero(velocity)) position += byDt(velocity);
   }
 };
-
-template <>
-inline Float ParticleSteps<Float, 2>::finiteLimit(Float x) {
-  return finiteLimitOfFloat(x);
-}
-template <>
-inline Float ParticleSteps<Float, 3>::finiteLimit(Float x) {
-  return finiteLimitOfFloat(x);
-}
 
 }  // namespace detail
 }  // namespace tinyparticle
