@@ -101,6 +101,39 @@ test(StepLength) {
   assertEqual((long) Loop(0, 0).dt<Q16_16>().raw(), 65536L);
 }
 
+// dt<S>() comes from floor(2^31 / n), rounded to the format's fraction
+// bits: it must equal the nearest unit, (2^F + n/2) / n, for every rate.
+// Classes: powers of two (q exact), odd parts up to the largest (where the
+// dropped part of q is closest to moving a value across a tie), the most
+// fraction bits (Fixed<2, 30>: one bit to spare). Every rate on the host;
+// on the Nano every power of two and a stride.
+template <typename S>
+struct Nearest {
+  static bool dt(uint16_t n) {
+    const uint32_t one = uint32_t(1) << S::kFracBits;
+    return uint32_t(Loop(n, 0).dt<S>().raw()) == (one + n / 2) / n;
+  }
+};
+
+test(StepLengthEveryRate) {
+#ifdef EPOXY_DUINO
+  const uint16_t stride = 1;
+#else
+  const uint16_t stride = 251;
+#endif
+  for (uint32_t n = 1; n <= 65535; n += stride) {
+    assertTrue(Nearest<Q16_16>::dt(uint16_t(n)));
+    assertTrue(Nearest<Q24_8>::dt(uint16_t(n)));
+    assertTrue(Nearest<Q8_8>::dt(uint16_t(n)));
+    assertTrue((Nearest<Fixed<2, 30> >::dt(uint16_t(n))));
+  }
+  for (uint32_t n = 1; n <= 65535; n *= 2) {
+    assertTrue(Nearest<Q16_16>::dt(uint16_t(n)));
+    assertTrue(Nearest<Q8_8>::dt(uint16_t(n)));
+  }
+  assertTrue(Nearest<Q16_16>::dt(65535));
+}
+
 // runSteps() steps the world as often as stepsDue() says, by dt<S>():
 // 10 ms at 256 steps a second covers the steps due at 0, 3.9 and 7.8 ms.
 struct CountingWorld {
