@@ -75,13 +75,7 @@ constexpr S negative(S constant) { return S::fromRaw(-constant.raw()); }
 // exact in fixed point): for |a * n| well inside Q16.16's range, as here.
 inline S timesWhole(S a, int16_t n) { return S::fromRaw(a.raw() * n); }
 // The sketch divides with whole numbers only, whose division the Arduino
-// core links anyway (micros()): no fixed-point division is linked for it.
-// 1 / a for a > 1/65536, rounded as S's own division rounds it: the raw
-// (2^32 + a/2) / a, as 1 + (2^32 + a/2 - a) / a, which fits 32 bits.
-inline S reciprocal(S a) {
-  const uint32_t r = uint32_t(a.raw());
-  return S::fromRaw(long((0UL - (r - r / 2)) / r + 1));
-}
+// core links anyway: no fixed-point division is linked for it.
 
 // ---- Wiring (extras/doc/wiring.md) ---------------------------------------
 const uint8_t kFsrDownPin = A0;     // squeezed when the user pushes down
@@ -135,8 +129,8 @@ S fsrNewtons(int reading) {
 }
 #else
 const int kFsrLimit = 960;  // the fitted curve has a pole near 990
-// newtons = x * 0.00981 / denominator in one division of whole numbers
-// (see reciprocal()): x * 0.00981 N/g in units of 2^-28 (at most 2.6e9)
+// newtons = x * 0.00981 / denominator in one division of whole numbers:
+// x * 0.00981 N/g in units of 2^-28 (at most 2.6e9)
 // over the denominator (0.50 to 4.6) in units of 2^-14 is newtons in units
 // of 2^-14, within 2.5e-4 of the curve (the fixed-point quotient: 2e-4).
 // It runs for every reading: a second division for the last two bits
@@ -294,8 +288,12 @@ void setLeverLength(int reading) {
   world.setLength(lever.rod, length);
   leverLength = length;
   // 1 / L as a quotient and 1 / L^2 as its square: Q16.16 holds L^2 only to
-  // 1.4e-4 of itself at 0.23 m, and 1 / L to 2e-6.
-  inverseLength = reciprocal(length);
+  // 1.4e-4 of itself at 0.23 m, and 1 / L to 2e-6. The quotient comes from
+  // the library's set-up reciprocal for a positive value, the routine
+  // setLength() has just used for the rod's own 1 / L (no second one is
+  // linked).
+  inverseLength =
+      S::fromRaw(long(S::positiveReciprocal(uint32_t(length.raw()))));
   inverseLengthSquared = inverseLength * inverseLength;
   forcePerNewton = kSensorDistance * inverseLengthSquared;
   stopX = kStopCos * length;
