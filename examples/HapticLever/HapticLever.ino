@@ -207,6 +207,9 @@ typedef World<S, 2, 2, 2, 1, 0> HapticWorld;
 HapticWorld world;
 LeverScene lever;
 HapticWorld::ParticleType* leverEnd;  // the end, looked up once in setup()
+// The rod's parameters (its length and the 1 / length the solver uses),
+// looked up once in setup(); setLength() keeps both.
+const HapticWorld::LinkParamsType* leverRod;
 Vec2<S> userForce;  // N, read by the custom force generator every step
 
 // 1,024 steps a second: timing is the one place that sets the step.
@@ -275,9 +278,7 @@ S downNewtons, upNewtons;  // the last reading of each FSR
 S push;                    // N at the sensors, averaged (down minus up)
 S pushRate;                // N/s, averaged
 int dialReading = -100;    // the dial's reading behind the lever length
-S leverLength;             // m, the virtual lever
 S inverseLengthSquared;    // 1 / m^2 of the virtual lever
-S inverseLength;           // 1 / m of the virtual lever
 S forcePerNewton;          // sensor distance / length^2: push to end force
 S forceScale;              // 1/s^2: the user's force on the end / its offset
 S stopX, stopY;            // m: the end at the upper range end (lower: y < 0)
@@ -286,15 +287,10 @@ void setLeverLength(int reading) {
   dialReading = reading;
   const S length = kShortest + timesWhole(kLengthSpan, reading);
   world.setLength(lever.rod, length);
-  leverLength = length;
-  // 1 / L as a quotient and 1 / L^2 as its square: Q16.16 holds L^2 only to
-  // 1.4e-4 of itself at 0.23 m, and 1 / L to 2e-6. The quotient comes from
-  // the library's set-up reciprocal for a positive value, the routine
-  // setLength() has just used for the rod's own 1 / L (no second one is
-  // linked).
-  inverseLength =
-      S::fromRaw(long(S::positiveReciprocal(uint32_t(length.raw()))));
-  inverseLengthSquared = inverseLength * inverseLength;
+  // 1 / L^2 as the square of the rod's 1 / L, which setLength() has just
+  // computed: Q16.16 holds L^2 only to 1.4e-4 of itself at 0.23 m, and
+  // 1 / L to 2e-6.
+  inverseLengthSquared = leverRod->inverseLength * leverRod->inverseLength;
   forcePerNewton = kSensorDistance * inverseLengthSquared;
   stopX = kStopCos * length;
   stopY = kStopSin * length;
@@ -391,7 +387,7 @@ void prepareStep() {
 // is within 3.4e-5 rad of it (0.02 us of servo command), as close as
 // atan2(), without its code and table.
 S leverRadians() {
-  const S s = leverEnd->position.y * inverseLength;
+  const S s = leverEnd->position.y * leverRod->inverseLength;
   const S s2 = s * s;
   return s + s * s2 * (S(0.163293) + S(0.103055) * s2);
 }
@@ -514,7 +510,7 @@ const char kStatusText[] PROGMEM =
 const char kPlotterText[] PROGMEM = "angle:# force:# length:#\r\n";
 
 bool writeStatus() {
-  const S values[] = {leverRadians() * S(57.29578), push, leverLength};
+  const S values[] = {leverRadians() * S(57.29578), push, leverRod->length};
   char line[kLineMax];
   uint8_t n = 0;
   uint8_t k = 0;
@@ -546,6 +542,7 @@ void setup() {
 #endif
   lever = buildLever(world, &userForce, kShortest);
   leverEnd = world.particle(lever.end);
+  leverRod = world.constraintParams<HapticWorld::LinkParamsType>(lever.rod);
   setLeverLength(readAnalogNow(kLengthDialPin));
   // The first step needs the push as a force too (later steps get it from
   // the pass before them), or gravity alone acts for that step.
