@@ -238,7 +238,10 @@ class AsciiRenderer {
     const Units x = toUnitsX(p.position.x);
     const Units y = toUnitsY(p.position.y);
     const Units rx = toUnits(p.radius, mX, true);
-    const Units ry = toUnits(p.radius, mY, true);
+    // (Points need no height: the call is not made for them.)
+    const Units ry = kParticleShape == ParticleShape::kCircles
+                         ? toUnits(p.radius, mY, true)
+                         : Units(0);
     const char c = p.isStatic() ? '+' : (rx < kSub / 2 ? 'o' : 'O');
     const Units centre = Units(low + kSub / 2);  // of the row's cells
     const Units dy = Units(centre - y);
