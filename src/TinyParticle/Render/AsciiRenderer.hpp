@@ -92,17 +92,18 @@ class AsciiRenderer {
       out.write(uint8_t('['));
       out.write(uint8_t('H'));
     }
-    if (mBorder && (mLine == 0 || mLine == total - 1)) {
-      out.write(uint8_t('+'));
-      for (uint8_t c = 0; c < kColumns; ++c) out.write(uint8_t('-'));
-      out.write(uint8_t('+'));
+    // A border line is a row of '-' between '+': one loop writes both.
+    const bool edge = mBorder && (mLine == 0 || mLine == total - 1);
+    char text[kColumns];
+    if (edge) {
+      for (uint8_t c = 0; c < kColumns; ++c) text[c] = '-';
     } else {
-      char text[kColumns];
       renderRow(world, uint8_t(mLine - first), text);
-      if (mBorder) out.write(uint8_t('|'));
-      for (uint8_t c = 0; c < kColumns; ++c) out.write(uint8_t(text[c]));
-      if (mBorder) out.write(uint8_t('|'));
     }
+    const uint8_t side = edge ? '+' : '|';
+    if (mBorder) out.write(side);
+    for (uint8_t c = 0; c < kColumns; ++c) out.write(uint8_t(text[c]));
+    if (mBorder) out.write(side);
     out.write(uint8_t('\n'));
     ++mLine;
     const bool done = mLine >= total;
