@@ -35,7 +35,7 @@ namespace tinyparticle {
 
 namespace detail {
 
-// 1 / n s (n > 0) in the scalar, from q = floor(2^31 / n), which the
+// 1 / n seconds (n > 0) in the scalar, from q = floor(2^31 / n), which the
 // constructor computes: rounding q to a fixed-point format's fraction bits
 // (halves up) gives 1 / n to the nearest unit, exactly as
 // (2^FracBits + n/2) / n does, with an add and a shift at run time instead
