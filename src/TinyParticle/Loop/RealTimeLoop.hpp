@@ -72,7 +72,6 @@ class BasicRealTimeLoop {
       : mStepWhole(1000000UL / atLeastOne(stepsPerSecond)),
         mStepFraction(uint16_t(1000000UL % atLeastOne(stepsPerSecond))),
         mStepsPerSecond(atLeastOne(stepsPerSecond)),
-        mStepQ31(0x80000000UL / atLeastOne(stepsPerSecond)),
         mFramePeriod(framesPerSecond == 0 ? 0 : 1000000UL / framesPerSecond),
         mMaxCatchUp(maxCatchUp == 0 ? 1 : maxCatchUp),
         mFractionSum(0),
@@ -80,7 +79,8 @@ class BasicRealTimeLoop {
         mNextFrame(0),
         mSteps(0),
         mSlipped(0),
-        mStarted(false) {}
+        mStarted(false),
+        mStepQ31(0x80000000UL / atLeastOne(stepsPerSecond)) {}
 
   // Starts the schedule now (stepsDue() also does this on its first call).
   void start() {
@@ -191,7 +191,6 @@ class BasicRealTimeLoop {
   const uint32_t mStepWhole;      // whole microseconds per step
   const uint16_t mStepFraction;   // and this many 1/stepsPerSecond us
   const uint16_t mStepsPerSecond;
-  const uint32_t mStepQ31;        // floor(2^31 / stepsPerSecond)
   const uint32_t mFramePeriod;    // us, 0: no frames
   const uint8_t mMaxCatchUp;
   uint16_t mFractionSum;
@@ -200,6 +199,9 @@ class BasicRealTimeLoop {
   uint32_t mSteps;
   uint32_t mSlipped;
   bool mStarted;
+  // Last, so that the fields before keep their offsets (the device
+  // simulator in extras/hil reads mSteps and mSlipped by offset).
+  const uint32_t mStepQ31;        // floor(2^31 / stepsPerSecond)
 };
 
 #if TINYPARTICLE_HAS_ARDUINO
