@@ -321,3 +321,25 @@ inline Vec<S, 3> cross(const Vec<S, 3>& a, const Vec<S, 3>& b) {
 }
 
 }  // namespace tinyparticle
+
+namespace tinyparticle {
+namespace detail {
+
+// Out-of-line vector kernels, for code that runs once per rod and step (the
+// rods' solves). On AVR an inlined product of two fixed-point or float
+// scalars costs 20 to 28 bytes of argument moves and a call; a kernel
+// called through two pointers replaces two or three of them by one call,
+// for a few cycles more. The hot loops elsewhere keep the inlined
+// operators.
+template <typename S, uint8_t N>
+TINYPARTICLE_NOINLINE S dotOutOfLine(const Vec<S, N>& a, const Vec<S, N>& b) {
+  return dot(a, b);
+}
+// v -= u (v . u): v without its part along the unit vector u.
+template <typename S, uint8_t N>
+TINYPARTICLE_NOINLINE void removeAlong(Vec<S, N>& v, const Vec<S, N>& u) {
+  v.addScaled(u, -dotOutOfLine(v, u));
+}
+
+}  // namespace detail
+}  // namespace tinyparticle
