@@ -172,14 +172,7 @@ struct LoneRods {
   static void rattle(W& world, Slot& s, bool unit) {
     const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
     if (moving == 0) return;
-    // After a fast turn the full unit vector (Newton's steps, rare), else
-    // d / L (see the top of this file).
-    const V d = Rods::span(world, s);
-    if (unit) {
-      Rods::normalizeInto(d, Rods::linkOf(s));
-    } else {
-      Rods::setDirection(d, Rods::linkOf(s), false);
-    }
+    Rods::setDirection(Rods::span(world, s), Rods::linkOf(s), unit);
     if (kTwoMovable && moving == 2) {
       rattleBoth(world, s);
       return;

@@ -457,11 +457,10 @@ struct RodSolver {
     scaled *= link.inverseLength;
     const S x = scaled.x, y = scaled.y;
     if (unit) {
-      const S q = x * x + y * y;
+      const S q = detail::dotOutOfLine(scaled, scaled);
       if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
-        const S k = S(1.5) - detail::half(q);
-        link.direction.x = x * k;
-        link.direction.y = y * k;
+        scaled *= S(1.5) - detail::half(q);
+        link.direction = scaled;
         return;
       }
     } else {
