@@ -72,10 +72,6 @@ static void checkUnit(Raw a, Raw b) {
   }
 }
 
-static uint32_t floatBitsOf(Float x) {
-  return tinyparticle::detail::floatBits(x);
-}
-
 static double turnFactorOf(double h) {
   return h >= 0.5 ? 2.0 : 2.0 / (1.0 + sqrt(1.0 - 2.0 * h));
 }
@@ -197,6 +193,10 @@ test(floatInverseSqrtAndTurnFactor) {
     }
   }
   assertEqual(gFailures, (uint16_t)0);
+}
+
+static uint32_t floatBitsOf(Float x) {
+  return tinyparticle::detail::floatBits(x);
 }
 
 static void checkFloatUnit(float x, float y) {
