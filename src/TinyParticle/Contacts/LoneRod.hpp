@@ -151,7 +151,8 @@ struct LoneRods {
     const V* w = &end.velocity;
     V relative;
     if (both) {
-      relative = end.velocity - world.particleAt(s.b).velocity;
+      relative = end.velocity;
+      relative -= world.particleAt(s.b).velocity;
       w = &relative;
     }
     S error;
@@ -233,9 +234,9 @@ struct LoneRods {
   // which -r saturates: a relative speed no step reaches).
   TINYPARTICLE_NOINLINE static void rattleBoth(W& world, const Slot& s) {
     const V& u = Rods::linkOf(s).direction;
-    const S radial = detail::dotOutOfLine(world.particleAt(s.a).velocity -
-                                              world.particleAt(s.b).velocity,
-                                          u);
+    V relative = world.particleAt(s.a).velocity;
+    relative -= world.particleAt(s.b).velocity;
+    const S radial = detail::dotOutOfLine(relative, u);
     shareBoth(world, s, -radial, S());
   }
 };
