@@ -453,8 +453,8 @@ struct RodSolver {
   // sketch) d is normalised in full.
   static void setDirection(const Vec<S, 2>& d,
                            typename W::LinkParamsType& link, bool unit) {
-    V scaled = d;
-    scaled *= link.inverseLength;
+    const S invL = link.inverseLength;
+    V scaled(d.x * invL, d.y * invL);
     const S x = scaled.x, y = scaled.y;
     if (unit) {
       const S q = detail::dotOutOfLine(scaled, scaled);
