@@ -16,8 +16,11 @@
 // relative error on components below 1, plus the product's rounding). The
 // turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or two
 // inverse square roots on arguments near 1); the same in units of 2^-8
-// for Q24.8. Float (the plain formulas): 4 units of 2^-24
-// relative for the inverse square root, 8 for the turn factor.
+// for Q24.8. Float (a guess from the bits and three Newton steps): 4 units
+// of 2^-24 relative for the inverse square root, 8 for the turn factor; a
+// unit vector's components within 6 units of 2^-24 (the root's 4, the
+// square's and the product's roundings), from the smallest subnormal to
+// the largest float; a zero, infinite or NaN component: false, unchanged.
 #include <AUnit.h>
 #include <TinyParticle.h>
 #include <TinyParticle/Math/Newton.hpp>
@@ -190,6 +193,43 @@ test(floatInverseSqrtAndTurnFactor) {
     }
   }
   assertEqual(gFailures, (uint16_t)0);
+}
+
+static uint32_t floatBitsOf(Float x) {
+  return tinyparticle::detail::floatBits(x);
+}
+
+static void checkFloatUnit(float x, float y) {
+  Vec2<Float> v;
+  v.x = Float(x);
+  v.y = Float(y);
+  const double length = sqrt(double(x) * x + double(y) * y);
+  const bool nonZero = normalizeByMultiplies(v);
+  const double bound = 6 * 5.9604645e-8;
+  if (!nonZero || fabs(v.x.toFloat() - x / length) > bound ||
+      fabs(v.y.toFloat() - y / length) > bound) {
+    fail(F("float unit"), x, v.x.toFloat(), x / length);
+  }
+}
+
+test(floatUnitVectorsAtEveryExponent) {
+  gFailures = 0;
+  const float others[] = {0.0f, 1.0f, -3.0f, 1.0e-30f, -1.0e30f, 1.4e-45f,
+                          3.4e38f};
+  for (int e = -149; e <= 127; ++e) {
+    const float p = ldexpf(1.0f, e);
+    for (uint8_t k = 0; k < sizeof(others) / sizeof(others[0]); ++k) {
+      checkFloatUnit(p, others[k]);
+      checkFloatUnit(-others[k], -p);
+    }
+  }
+  assertEqual(gFailures, (uint16_t)0);
+  const float bad[] = {0.0f, INFINITY, -INFINITY, NAN};
+  for (uint8_t k = 0; k < 4; ++k) {
+    Vec2<Float> v(Float(bad[k]), Float(0.0f));
+    assertFalse(normalizeByMultiplies(v));
+    assertTrue(floatBitsOf(v.x) == floatBitsOf(Float(bad[k])));
+  }
 }
 #endif
 

@@ -143,19 +143,16 @@ struct LoneRods {
     bool fromB;
     P& end = movingEnd<kAnchored>(world, s, fromB);  // a when both move
     V u = Rods::linkOf(s).direction;
-    V d = end.position;
+    V d = Rods::span(world, s);  // from b to a: the same as rattle()'s
     if (fromB) {
       u = -u;
-      detail::subtractNonZero(d, world.particleAt(s.a).position);
-    } else {
-      detail::subtractNonZero(d, kAnchored || s.b == kAnchorIndex
-                                     ? Rods::linkOf(s).anchor
-                                     : world.particleAt(s.b).position);
+      d = -d;
     }
     const V* w = &end.velocity;
     V relative;
     if (both) {
-      relative = end.velocity - world.particleAt(s.b).velocity;
+      relative = end.velocity;
+      relative -= world.particleAt(s.b).velocity;
       w = &relative;
     }
     S error;
@@ -183,7 +180,7 @@ struct LoneRods {
     }
     bool fromB;
     P& end = movingEnd<kAnchored>(world, s, fromB);
-    removeRadial(end.velocity, Rods::linkOf(s).direction);
+    detail::removeAlong(end.velocity, Rods::linkOf(s).direction);
   }
 
 
@@ -198,17 +195,6 @@ struct LoneRods {
     }
     return uint8_t(!isImmovable(world, s.a)) +
            uint8_t(!isImmovable(world, s.b));
-  }
-
-  // RATTLE for one moving end: it keeps no speed along the rod.
-  static void removeRadial(Vec<S, 2>& v, const Vec<S, 2>& u) {
-    const S ux = u.x, uy = u.y;
-    const S radial = v.x * ux + v.y * uy;
-    v.x -= ux * radial;
-    v.y -= uy * radial;
-  }
-  static void removeRadial(Vec<S, 3>& v, const Vec<S, 3>& u) {
-    v.addScaled(u, -dot(v, u));
   }
 
   // A rod with two movable ends (a free dumbbell, or a world of one
@@ -229,23 +215,28 @@ struct LoneRods {
     P& b = world.particleAt(s.b);
     const V& u = Rods::linkOf(s).direction;
     const S share = shareOfA(a, b);
-    a.velocity.addScaled(u, speed * share);
-    b.velocity.addScaled(u, -(speed - speed * share));
+    pushApart(a.velocity, b.velocity, u, speed, share);
     if (!detail::isZero(error)) {
-      a.position.addScaled(u, error * share);
-      b.position.addScaled(u, -(error - error * share));
+      pushApart(a.position, b.position, u, error, share);
     }
+  }
+  // x gets `amount` times `share` along u, y the rest against it.
+  TINYPARTICLE_NOINLINE static void pushApart(V& x, V& y, const V& u,
+                                              S amount, S share) {
+    const S toX = amount * share;
+    x.addScaled(u, toX);
+    y.addScaled(u, toX - amount);
   }
   // RATTLE for two moving ends: their relative speed along u, r, is taken
   // out as a change -r shared as above (shareBoth(): a gets (-r) w, which
   // is -(r w) to the bit, as a product rounds ties away from zero; b gets
-  // -((-r) - (-r) w) = r - r w; in fixed point all but r = S::lowest(),
+  // (-r) w - (-r) = r - r w; in fixed point all but r = S::lowest(),
   // which -r saturates: a relative speed no step reaches).
   TINYPARTICLE_NOINLINE static void rattleBoth(W& world, const Slot& s) {
     const V& u = Rods::linkOf(s).direction;
-    const S radial = dot(world.particleAt(s.a).velocity -
-                             world.particleAt(s.b).velocity,
-                         u);
+    V relative = world.particleAt(s.a).velocity;
+    relative -= world.particleAt(s.b).velocity;
+    const S radial = detail::dotOutOfLine(relative, u);
     shareBoth(world, s, -radial, S());
   }
 };

@@ -1,4 +1,5 @@
-// Inverse square roots and unit vectors from multiplies only (Fixed).
+// Inverse square roots and unit vectors from multiplies only (Fixed and
+// Float).
 //
 // A scene whose step never divides should not link the divide and the
 // square root (about 1.7 KB of code and tables in Q16.16) for work done at
@@ -13,7 +14,9 @@
 // In Q16.16 the inverse square root is within 5 units of 2^-16 relative
 // plus one unit (extras/test/NewtonTest checks it on every leading-bit
 // position). Slower than the square root (about a dozen multiplies): for
-// set-up and rare paths, not for every step.
+// set-up and rare paths, not for every step. Float takes its first guess
+// from the bits instead (below); on AVR its square root and the unit
+// vector's divides came to about 900 B.
 #pragma once
 
 #include <stdint.h>
@@ -27,14 +30,35 @@
 namespace tinyparticle {
 namespace detail {
 
-// Other scalars (Float, a host's double) have a compact divide and square
-// root, and a world that steps divides already (1 / dt): for them the
-// functions below are the plain formulas; Newton's steps are for Fixed.
+// Other scalars (a host's double) have a compact divide and square root:
+// for them the functions below are the plain formulas. Newton's steps are
+// for Fixed and for Float: on AVR a float's square root and the unit
+// vector's divides came to about 900 B, for set-up and the rare paths.
 
 // 1 / sqrt(q) for q > 0 (q <= 0 gives 0).
 template <typename S>
 inline S inverseSqrt(S q) {
   return isPositive(q) ? S(1) / sqrt(q) : S();
+}
+// Float: a first guess from the bits (halving the exponent by a shift of
+// the whole word, within 3.5 %), then three Newton steps (1.7e-3, 4.5e-6,
+// then the rounding of the last step: a few units of 2^-24). A subnormal q
+// is scaled by 2^24 first (exact), its root by 2^12 after. Infinity gives
+// 0; q <= 0 and NaN give 0, as for the other scalars.
+TINYPARTICLE_NOINLINE inline Float inverseSqrt(Float q) {
+  if (!isPositive(q)) return Float();
+  Float scale(1);
+  if (floatBits(q) < 0x00800000ul) {  // subnormal
+    q *= Float(16777216.0);
+    scale = Float(4096.0);
+  }
+  uint32_t bits = 0x5F3759DFul - (floatBits(q) >> 1);
+  float guess;
+  memcpy(&guess, &bits, sizeof(guess));
+  Float y(guess);
+  const Float halfQ = half(q);
+  for (uint8_t i = 0; i < 3; ++i) y *= Float(1.5) - halfQ * y * y;
+  return y * scale;
 }
 // Fixed: q is brought into [1/2, 2) by factors of 4 (exact upwards;
 // downwards the halvings round), then a parabola in steps of 2^-8, within
@@ -69,6 +93,30 @@ template <typename S, uint8_t N>
 inline bool normalizeByMultiplies(Vec<S, N>& v) {
   return v.normalize();
 }
+// Float: the largest component's magnitude, read from the bits (positive
+// floats order as integers), 2^e, is brought to about 1 by two exact
+// multiplies by 2^(-e/2), so that the squares neither overflow nor vanish;
+// then v (1 / sqrt(|v|^2)). A component that is infinite or NaN has no
+// direction: false, v unchanged, as for a zero vector.
+template <uint8_t N>
+TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Float, N>& v) {
+  uint32_t top = 0;
+  for (uint8_t i = 0; i < N; ++i) {
+    const uint32_t magnitude = floatBits(v[i]) & 0x7FFFFFFFul;
+    if (magnitude > top) top = magnitude;
+  }
+  if (top == 0 || top >= 0x7F800000ul) return false;
+  // Biased exponent E in [0, 254]: the factor 2^(63 - E/2), as a biased
+  // exponent 64 + (254 - E) / 2, is normal at both ends.
+  const uint32_t scaleBits = (64ul + ((254ul - (top >> 23)) >> 1)) << 23;
+  float scale;
+  memcpy(&scale, &scaleBits, sizeof(scale));
+  v *= Float(scale);
+  v *= Float(scale);
+  v *= inverseSqrt(dotOutOfLine(v, v));
+  return true;
+}
+
 // Fixed: the largest component is first brought into [1/2, 1) by powers
 // of two, so that short vectors keep their bits and long ones cannot
 // overflow; then v / |v| = v (1 / sqrt(|v|^2)).
@@ -86,7 +134,7 @@ TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Fixed<I, F>, N>& v) {
     largest = half(largest);
     v *= S(0.5);
   }
-  v *= inverseSqrt(v.magnitudeSquared());
+  v *= inverseSqrt(dotOutOfLine(v, v));
   return true;
 }
 
@@ -99,6 +147,19 @@ template <typename S>
 inline S turnDropFactor(S h) {
   if (!(h < S(0.5))) return S(2);
   return S(2) / (S(1) + sqrt(S(1) - (h + h)));
+}
+// Float: as Fixed below, the series up to h = 1/32 with the terms up to
+// h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then Newton's steps.
+inline Float turnDropFactor(Float h) {
+  typedef Float S;
+  if (!(h > S(1.0 / 32))) {
+    return S(1) + h * (S(0.5) + h * (S(0.5) + h * (S(0.625) + h * S(0.875))));
+  }
+  if (!(h < Float(0.5))) return Float(2);
+  const Float m = Float(1) - (h + h);
+  const Float t = Float(1) + m * inverseSqrt(m);
+  const Float r = inverseSqrt(t * t);
+  return r + r;
 }
 // Fixed: up to h = 1/32 (a turn of 1/4 rad) the series 1 + h/2 + h^2/2 +
 // 5h^3/8 + 7h^4/8 + 21h^5/16 + ... (Catalan numbers over powers of 2),

@@ -103,6 +103,18 @@ inline void subtractNonZero(Vec<S, 3>& d, const Vec<S, 3>& v) {
   if (!isZero(v.z)) d.z -= v.z;
 }
 
+// Fixed: a subtraction costs what the test does; the plain one is smaller.
+template <uint8_t I, uint8_t F>
+inline void subtractNonZero(Vec<Fixed<I, F>, 2>& d,
+                            const Vec<Fixed<I, F>, 2>& v) {
+  d -= v;
+}
+template <uint8_t I, uint8_t F>
+inline void subtractNonZero(Vec<Fixed<I, F>, 3>& d,
+                            const Vec<Fixed<I, F>, 3>& v) {
+  d -= v;
+}
+
 template <typename S>
 inline bool isZeroVector(const Vec<S, 2>& v) {
   return isZero(v.x) && isZero(v.y);
