@@ -351,25 +351,20 @@ struct Resolver {
     } else {
       penetration = S();
     }
+    // (shareA is 0 when a does not move: b then takes it all. b's push is
+    // written as a's part less the whole, the negated rest, without a
+    // negation.)
     S velocityA = deltaV, penetrationA = penetration;
-    S velocityB = S(), penetrationB = S();
-    if (!movesA) {
-      velocityA = penetrationA = S();
-      velocityB = deltaV;
-      penetrationB = penetration;
-    } else if (movesB) {
+    if (movesB) {
       velocityA = deltaV * shareA;
       penetrationA = penetration * shareA;
-      velocityB = deltaV - velocityA;
-      penetrationB = penetration - penetrationA;
+      push(*b, contact.normal, velocityA - deltaV, penetrationA - penetration,
+           change.moveB);
+      change.movedB = penetrating;
     }
     if (movesA) {
       push(a, contact.normal, velocityA, penetrationA, change.moveA);
       change.movedA = penetrating;
-    }
-    if (movesB) {
-      push(*b, contact.normal, -velocityB, -penetrationB, change.moveB);
-      change.movedB = penetrating;
     }
     change.touchedA = movesA;
     change.touchedB = movesB;
