@@ -44,10 +44,17 @@ uint8_t buildBallBox(W& world, uint8_t count, uint16_t seed,
   // so the speed stays below 1 m/s.
   const S unit(W::kDimensions == 2 ? 0.7 / 128 : 0.57 / 128);
   uint8_t added = 0;
+  // Places 1 .. side along x, row by row (counted, not divided: the
+  // division routine would be linked for this alone).
+  uint8_t column = 0, row = 1;
   for (uint8_t i = 0; i < count; ++i) {
+    if (++column > side) {
+      column = 1;
+      ++row;
+    }
     V position;
-    position.x = spacing * S(int(i % side + 1));
-    position.y = spacing * S(int(i / side + 1));
+    position.x = spacing * S(int(column));
+    position.y = spacing * S(int(row));
     if (W::kDimensions == 3) position[2] = S(0.5);
     const ParticleId id = world.addParticle(position, S(0.1), S(0.03));
     if (!id.isValid()) break;
