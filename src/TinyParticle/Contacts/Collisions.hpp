@@ -55,6 +55,7 @@
 
 #include "../Configuration.hpp"
 #include "../Math/Fixed.hpp"
+#include "../Math/Newton.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/ScalarTraits.hpp"
 #include "../Math/Vec.hpp"
@@ -357,15 +358,15 @@ struct CollisionConstraint {
     // Vec's normalisation scales the difference up first (Math/Vec.hpp), so
     // the normal is unit length to a few units of the scalar.
     V normal = delta;
-    S distance;
+    S distance = S();
     if (!detail::AxisDifference<S>::normalize(normal, distance)) {
-      distance = normal.magnitudeAndNormalize();
+      if (detail::normalizeByMultiplies(normal)) {
+        distance = dot(delta, normal);
+      } else {
+        normal.y = S(1);  // centres coincide: any direction will do
+      }
     }
     S penetration = reach - distance;
-    if (distance == S()) {
-      normal = V();
-      normal.y = S(1);  // centres coincide: any direction will do
-    }
     WorldAccess::addContact(world, i, j, normal, penetration, source);
   }
   // ---- Swept contacts (World::addSweptCollisions()) ----------------------
