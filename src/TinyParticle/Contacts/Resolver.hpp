@@ -288,7 +288,8 @@ struct Resolver {
     } else if (movesB) {
       shareA = a.inverseMass == b->inverseMass
                    ? S(0.5)
-                   : a.inverseMass / (a.inverseMass + b->inverseMass);
+                   : a.inverseMass *
+                         detail::compactReciprocal(a.inverseMass + b->inverseMass);
     }
 
     // 1. Velocity.
