@@ -25,7 +25,8 @@
 //
 // Divisions: the share of each particle is 1, 0 or 1/2 when one side is
 // immovable or both masses are equal (walls, pivots, equal balls); only two
-// different masses cost a division per resolved contact.
+// different masses cost a reciprocal per resolved contact (the compact one:
+// a scene whose step never divides links no fast divide for it).
 //
 // Arithmetic with the contact normal skips the zeros and ones of an axis
 // plane's normal in fixed point (Contact.hpp), and a multiply by dt may be a
@@ -282,6 +283,9 @@ struct Resolver {
     }
     // A's share of each correction: its inverse mass over the sum. Exact
     // without a division when one side is immovable or the masses are equal.
+    // (Two different masses take the compact reciprocal: slower than the
+    // fast divide, but small, and set-up links it anyway for the inverse
+    // masses; a step that never divides then links no fast divide.)
     S shareA = S(1);
     if (!movesA) {
       shareA = S();
