@@ -11,7 +11,8 @@
 // next (particles move little in a step), so the insertion sort that
 // restores it costs about one compare per particle. The pairs that pass are
 // tested on the other axes (|d| > r1 + r2 rejects) in the same loop, then
-// squared, and only touching pairs pay a square root and a division.
+// squared, and only touching pairs pay for a normal (by multiplies: no
+// square root or divide is linked for collisions in fixed point).
 // Touching counts, and so does a gap below World::contactMargin(), as for
 // planes: a resting ball must still lose the closing velocity that gravity
 // gives it in each step.
@@ -55,6 +56,7 @@
 
 #include "../Configuration.hpp"
 #include "../Math/Fixed.hpp"
+#include "../Math/Newton.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/ScalarTraits.hpp"
 #include "../Math/Vec.hpp"
@@ -103,12 +105,13 @@ struct AxisSpeed<Fixed<I, F> > {
 
 // A difference of centres along x only (balls side by side on the floor:
 // its contacts leave them at exactly the same height) normalises to x, +1
-// or -1, and its length is that component's magnitude: what
-// Vec::magnitudeAndNormalize() gives for it, exactly, while the magnitude
-// is below 2^kTop, where that normalisation scales nothing down (checked
-// for every such value by extras/test/CollisionAxisTest). Without the
-// square root and the two divisions. Fixed point only; false (nothing
-// done) for any other vector or scalar.
+// or -1, and its length is that component's magnitude: the exact answer,
+// what Vec::magnitudeAndNormalize() gives for it while the magnitude is
+// below 2^kTop, where that normalisation scales nothing down (checked for
+// every such value by extras/test/CollisionAxisTest). The general way
+// (Newton's multiplies) comes within a few units of it, for a dozen
+// multiplies. Fixed point only; false (nothing done) for any other vector
+// or scalar.
 template <typename S>
 struct AxisDifference {
   template <class V>
@@ -354,18 +357,19 @@ struct CollisionConstraint {
     // small balls in fixed point that square is a few units of the scalar
     // (r = 1 cm in Q16.16: 26 units at contact), and a normal from it would
     // be off by a few percent, a bounce gaining or losing as much energy.
-    // Vec's normalisation scales the difference up first (Math/Vec.hpp), so
-    // the normal is unit length to a few units of the scalar.
+    // normalizeByMultiplies() scales the difference up first
+    // (Math/Newton.hpp), so the normal is unit length to a few units of the
+    // scalar; the distance is the difference along it.
     V normal = delta;
-    S distance;
+    S distance = S();
     if (!detail::AxisDifference<S>::normalize(normal, distance)) {
-      distance = normal.magnitudeAndNormalize();
+      if (detail::normalizeByMultiplies(normal)) {
+        distance = dot(delta, normal);
+      } else {
+        normal.y = S(1);  // centres coincide: any direction will do
+      }
     }
     S penetration = reach - distance;
-    if (distance == S()) {
-      normal = V();
-      normal.y = S(1);  // centres coincide: any direction will do
-    }
     WorldAccess::addContact(world, i, j, normal, penetration, source);
   }
   // ---- Swept contacts (World::addSweptCollisions()) ----------------------

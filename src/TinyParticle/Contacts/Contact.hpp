@@ -113,32 +113,6 @@ inline void pushAlongNormal(Vec<S, 3>& velocity, Vec<S, 3>& position,
   position.z += move.z;
 }
 
-// Whether a contact normal is +y, straight up (the normal of a floor, the
-// most common contact with scenery: every product with it is the y
-// component, exactly what NormalComponent's products give). Fixed point
-// only: for another scalar the answer is no, and its contacts take the
-// general path.
-template <typename S>
-struct FloorNormal {
-  static const bool kUsed = false;  // no short way to link
-  template <class V>
-  static bool is(const V&) {
-    return false;
-  }
-};
-
-template <uint8_t I, uint8_t F>
-struct FloorNormal<Fixed<I, F> > {
-  static const bool kUsed = true;
-  typedef Fixed<I, F> T;
-  static bool is(const Vec<T, 2>& n) {
-    return n.x.raw() == 0 && n.y.raw() == T::kRawOne;
-  }
-  static bool is(const Vec<T, 3>& n) {
-    return n.x.raw() == 0 && n.z.raw() == 0 && n.y.raw() == T::kRawOne;
-  }
-};
-
 }  // namespace detail
 
 template <typename S, uint8_t Dim>

@@ -95,7 +95,6 @@ struct PlaneConstraint {
                            uint8_t source) {
     typedef Vec<S, Dim> V;
     typedef Particle<S, Dim> P;
-    Resolver<W>::useShortWay();  // for a floor's contacts
     const PlaneConstraint& plane = InSlot::of<PlaneConstraint>(slot);
     const V& normal = plane.normal;
     const S offset = plane.offset;
@@ -140,7 +139,6 @@ struct PlaneConstraint {
                           uint8_t source) {
     typedef Vec<S, Dim> V;
     typedef Particle<S, Dim> P;
-    Resolver<W>::useShortWay();  // for its floor's contacts
     const BoxParams<S, Dim>& box = InSlot::of<BoxParams<S, Dim> >(slot);
     const S margin = W::contactMargin();
     uint8_t near[ParticleSlots<W>::value];
@@ -258,20 +256,8 @@ struct PlaneConstraint {
     if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {
       return;
     }
-    // The particle is awake (isTarget()), so the contact wakes nobody:
-    // while the pool has room it is written here, without the call.
-    typename W::ContactType* c = Resolver<W>::takeFreeSlot(world);
-    if (c == nullptr) {
-      WorldAccess::recordContact(world, i, kNoIndex, wall.normal, penetration,
-                                 separating, wall.source);
-      return;
-    }
-    c->normal = wall.normal;
-    c->penetration = penetration;
-    c->separatingVelocity = separating;
-    c->a = i;
-    c->b = kNoIndex;
-    c->source = wall.source;
+    WorldAccess::recordContact(world, i, kNoIndex, wall.normal, penetration,
+                               separating, wall.source);
   }
 
   static bool isTarget(const Particle<S, Dim>& p) {

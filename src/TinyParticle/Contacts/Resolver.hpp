@@ -25,7 +25,8 @@
 //
 // Divisions: the share of each particle is 1, 0 or 1/2 when one side is
 // immovable or both masses are equal (walls, pivots, equal balls); only two
-// different masses cost a division per resolved contact.
+// different masses cost a reciprocal per resolved contact (the compact one:
+// a scene whose step never divides links no fast divide for it).
 //
 // Arithmetic with the contact normal skips the zeros and ones of an axis
 // plane's normal in fixed point (Contact.hpp), and a multiply by dt may be a
@@ -103,14 +104,14 @@ struct Resolver {
         continue;
       }
       if (iterations == cap || !isActive(contact, closing, deep)) continue;
-      resolveOne(world, contact, byDt, change);
+      resolveAny(world, contact, byDt, change);
       ++iterations;
     }
     if (linkedCount == 0) return iterations;
     uint8_t next = worstOf(contacts, linked, linkedCount, closing, deep);
     while (next != kNoIndex && iterations < cap) {
       C& contact = contacts[next];
-      resolveOne(world, contact, byDt, change);
+      resolveAny(world, contact, byDt, change);
       ++iterations;
       // (The contact just resolved is neither closing nor penetrating now,
       // so it is not picked again.)
@@ -150,27 +151,6 @@ struct Resolver {
       return kNoIndex;
     }
     return slot;
-  }
-
-  // The short way for contacts with a floor (resolveOnFloor()) is linked
-  // only into sketches that can have one: the generators of axis planes
-  // and boxes call this in each step, before the resolver runs. (Not for a
-  // world of one contact slot, whose one contact takes the general way, nor
-  // for a float scalar, which has no short way.)
-  static void useShortWay() {
-    if (W::kContactCapacity > 1 && detail::FloorNormal<S>::kUsed) {
-      shortWay() = &resolveOnFloor;
-    }
-  }
-
-  // The pool's next free slot, taken; null when the pool is full (then
-  // World::recordContact() applies slotFor()). For a generator whose
-  // contact needs nothing else of recordContact(): it wakes nobody.
-  static C* takeFreeSlot(W& world) {
-    const uint8_t count = world.contactCount();
-    if (count >= W::kContactCapacity) return nullptr;
-    WorldAccess::takeContactSlot(world);
-    return &WorldAccess::contact(world, count);
   }
 
   static S separatingVelocity(W& world, const C& c) {
@@ -283,28 +263,8 @@ struct Resolver {
     }
   }
 
-  // A contact with a floor takes the short way when the sketch has one
-  // (each is out of line: called from two places, and the general one is
-  // large; the short one's frame is small). This choice itself is inlined.
-  TINYPARTICLE_ALWAYS_INLINE static void resolveOne(W& world, C& contact,
-                                                    const Scaler<S>& byDt,
-                                                    Change& change) {
-    const ShortWay way = shortWay();
-    if (contact.b != kNoIndex || way == nullptr ||
-        !way(world, contact, byDt, change)) {
-      resolveAny(world, contact, byDt, change);
-    }
-  }
-
-  // resolveOnFloor() once a generator has asked for it (useShortWay()),
-  // null before. Worlds of one type share it: one without floors then
-  // only looks at each contact's normal and finds none.
-  typedef bool (*ShortWay)(W&, C&, const Scaler<S>&, Change&);
-  static ShortWay& shortWay() {
-    static ShortWay way = nullptr;
-    return way;
-  }
-
+  // Resolves one contact: velocity, then penetration. (Out of line: called
+  // from three places.)
   TINYPARTICLE_NOINLINE static void resolveAny(W& world, C& contact,
                                                const Scaler<S>& byDt,
                                                Change& change) {
@@ -323,13 +283,17 @@ struct Resolver {
     }
     // A's share of each correction: its inverse mass over the sum. Exact
     // without a division when one side is immovable or the masses are equal.
+    // (Two different masses take the compact reciprocal: slower than the
+    // fast divide, but small, and set-up links it anyway for the inverse
+    // masses; a step that never divides then links no fast divide.)
     S shareA = S(1);
     if (!movesA) {
       shareA = S();
     } else if (movesB) {
       shareA = a.inverseMass == b->inverseMass
                    ? S(0.5)
-                   : a.inverseMass / (a.inverseMass + b->inverseMass);
+                   : a.inverseMass *
+                         detail::compactReciprocal(a.inverseMass + b->inverseMass);
     }
 
     // 1. Velocity.
@@ -392,75 +356,23 @@ struct Resolver {
     } else {
       penetration = S();
     }
+    // (shareA is 0 when a does not move: b then takes it all. b's push is
+    // written as a's part less the whole, the negated rest, without a
+    // negation.)
     S velocityA = deltaV, penetrationA = penetration;
-    S velocityB = S(), penetrationB = S();
-    if (!movesA) {
-      velocityA = penetrationA = S();
-      velocityB = deltaV;
-      penetrationB = penetration;
-    } else if (movesB) {
+    if (movesB) {
       velocityA = deltaV * shareA;
       penetrationA = penetration * shareA;
-      velocityB = deltaV - velocityA;
-      penetrationB = penetration - penetrationA;
+      push(*b, contact.normal, velocityA - deltaV, penetrationA - penetration,
+           change.moveB);
+      change.movedB = penetrating;
     }
     if (movesA) {
       push(a, contact.normal, velocityA, penetrationA, change.moveA);
       change.movedA = penetrating;
     }
-    if (movesB) {
-      push(*b, contact.normal, -velocityB, -penetrationB, change.moveB);
-      change.movedB = penetrating;
-    }
     change.touchedA = movesA;
     change.touchedB = movesB;
-  }
-
-  // resolveOne() for a contact with scenery (b: none) whose normal is +y,
-  // with an awake movable particle and no bounce (a ball resting on the
-  // floor, the most common contact): the same steps with one particle and
-  // one component, the same results, a third of the cycles. False, and
-  // nothing done, for any other contact.
-  TINYPARTICLE_NOINLINE static bool resolveOnFloor(W& world, C& contact,
-                                                   const Scaler<S>& byDt,
-                                                   Change& change) {
-    if (!detail::FloorNormal<S>::is(contact.normal)) return false;
-    P& a = world.particleAt(contact.a);
-    // Asleep or immovable: the general way.
-    if (a.isResting()) return false;
-    const S separating = contact.separatingVelocity;
-    bool velocity = false;
-    if (detail::isNegative(separating)) {
-      const S deltaV = -separating;
-      if (!detail::isZero(WorldAccess::restitutionOf(world, contact.source))) {
-        // accelerationAlong(a, normal), resolveAny()'s alongA.
-        S along = a.acceleration.y;
-        if (W::kForceCapacity != 0) {
-          along = along + WorldAccess::uniformComponent(world, &V::y);
-        }
-        // A bounce (closing faster than this step's acceleration explains):
-        // the general way. (fabs(along), written out: the call cost more
-        // than the test.)
-        if (deltaV > byDt(along < S() ? -along : along)) return false;
-      }
-      // No bounce: the separating velocity becomes 0.
-      contact.separatingVelocity = S();
-      velocity = true;
-      a.velocity.y += deltaV;
-    }
-    S penetration = contact.penetration;
-    const bool penetrating = detail::isPositive(penetration);
-    if (penetrating) {
-      contact.penetration = S();
-      a.position.y += penetration;
-      change.moveA = V();  // (read only when movedA)
-      change.moveA.y = penetration;
-    }
-    change.touchedA = true;
-    change.touchedB = change.movedB = false;
-    change.movedA = penetrating;
-    change.velocity = velocity;
-    return true;
   }
 };
 

@@ -36,16 +36,25 @@ uint8_t buildBallBox(W& world, uint8_t count, uint16_t seed,
   // The smallest grid with at least `count` places per layer.
   uint8_t side = 1;
   while (side * side < count) ++side;
-  const S spacing = S(1) / S(int(side + 1));
+  // (The compact reciprocal: the same value as S(1) / x, without linking
+  // the fast divide into a sketch that may not need it.)
+  const S spacing = detail::compactReciprocal(S(int(side + 1)));
   SceneRandom random(seed);
   // Each velocity component is a multiple of 1/128 of 0.7 m/s (0.57 in 3D),
   // so the speed stays below 1 m/s.
   const S unit(W::kDimensions == 2 ? 0.7 / 128 : 0.57 / 128);
   uint8_t added = 0;
+  // Places 1 .. side along x, row by row (counted, not divided: the
+  // division routine would be linked for this alone).
+  uint8_t column = 0, row = 1;
   for (uint8_t i = 0; i < count; ++i) {
+    if (++column > side) {
+      column = 1;
+      ++row;
+    }
     V position;
-    position.x = spacing * S(int(i % side + 1));
-    position.y = spacing * S(int(i / side + 1));
+    position.x = spacing * S(int(column));
+    position.y = spacing * S(int(row));
     if (W::kDimensions == 3) position[2] = S(0.5);
     const ParticleId id = world.addParticle(position, S(0.1), S(0.03));
     if (!id.isValid()) break;
