@@ -55,6 +55,7 @@
 #include "Sleep.hpp"
 #include "Slots.hpp"
 #include "UniformAcceleration.hpp"
+#include "WorldCore.hpp"
 
 namespace tinyparticle {
 
@@ -81,7 +82,9 @@ class World
       private detail::SleepState<
           bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
                    S),
-          (kConstraints > 0)> {
+          (kConstraints > 0)>,
+      // Last, so that its fields come after the pools, as members would.
+      private WorldCore<S, Dim> {
   static_assert(IsScalar<S>::value, TINYPARTICLE_SCALAR_MESSAGE);
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
@@ -115,18 +118,20 @@ class World
   typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
       SleepStore;
   typedef GravityForce<S, Dim> GravityType;
-  // The step's work on the particles, shared by every World<S, Dim, ...>.
+  // The step's work on the particles, shared by every World<S, Dim, ...>:
+  // the routines of WorldCore, and the algorithms they run.
+  typedef WorldCore<S, Dim> Core;
   typedef detail::ParticleSteps<S, Dim> Steps;
+  using Core::mError;
+  using Core::mContactCount;
+  using Core::mIterationCap;
+  using Core::mStats;
   // Generators and the renderer reach the slots and the step's uniform
   // acceleration through it (Core/Access.hpp).
   friend class WorldAccess;
 
  public:
-  constexpr World()
-      : mError(0),
-        mContactCount(0),
-        mIterationCap(0),
-        mStats() {}
+  constexpr World() {}
 
   // The standard gravity of every scene: 9.81 m/s^2 along -y.
   static Vec standardGravity() {
@@ -161,23 +166,8 @@ class World
     static_assert(kParticles > 0,
                   "this World has no particle slot: World<S, Dim, particles, "
                   "forces, constraints, contacts> needs particles > 0");
-    ParticleType* const slots = detail::throughPointer(&particleAt(0));
-    for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = slots[i];
-      if (p.inUse()) continue;
-      const uint8_t generation = p.generation;
-      p = ParticleType();
-      p.generation = generation;
-      p.position = position;
-      p.inverseMass = inverseMass;
-      p.radius = radius;
-      p.flags = ParticleType::kInUse | ParticleType::kCollides;
-      if (inverseMass == S()) p.flags |= ParticleType::kStatic;
-      return ParticleId(i, generation);
-    }
-    mError |= WorldError::kParticlesFull;
-    TINYPARTICLE_DEBUG_PRINT("particle pool full");
-    return ParticleId();
+    return Core::placeParticle(&particleAt(0), kParticles, position,
+                               inverseMass, radius);
   }
 
   // The particle, or null if the id is invalid or stale.
@@ -536,12 +526,7 @@ class World
       return;
     }
     TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
-    for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
-      p.flags = detail::isZero(p.inverseMass)
-                    ? uint8_t(p.flags | ParticleType::kStatic)
-                    : uint8_t(p.flags & ~ParticleType::kStatic);
-    }
+    Core::markStatic(&particleAt(0), kParticles);
     TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
     UniformStore::clearUniform();
     for (uint8_t i = 0; i < kForces; ++i) {
@@ -562,11 +547,7 @@ class World
     // With rods, the positions move after the rods' velocity solve, so that
     // each moves once, rounded once (the solver calls movePositions()).
     const RodSolve solveRods = RodStore::rodSolver();
-    if (kConstraints != 0 && kContacts != 0) {
-      integrateApart(byDt, solveRods == nullptr);
-    } else {
-      integrate(byDt, solveRods == nullptr);
-    }
+    integrate(byDt, solveRods == nullptr);
     if (kConstraints != 0) {
       if (solveRods != nullptr) {
         TINYPARTICLE_PROFILE_BEGIN(kProfileRods);
@@ -597,8 +578,7 @@ class World
       SleepStore::setInContacts(false);
       TINYPARTICLE_PROFILE_END(kProfileResolve);
     }
-    if (kConstraints != 0) checkFiniteAfterContacts();
-    for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
+    Core::finishStep(&particleAt(0), kParticles, kConstraints != 0);
     StepScalerStore::setStepScaler(nullptr);  // byDt ends with the step
     TINYPARTICLE_PROFILE_END(kProfileStep);
   }
@@ -738,16 +718,8 @@ class World
   // rest of the uniform acceleration's kick (integrate() gave the first
   // half). The step leaves both to the solver when the world has rods.
   void movePositions(const Scaler<S>& byDt) {
-    Vec rest;
-    if (kForces != 0) {
-      const Vec& uniform = UniformStore::uniform();
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (detail::isZero(uniform[k])) continue;
-        const S whole = byDt(uniform[k]);
-        rest[k] = whole - detail::half(whole);
-      }
-    }
-    Steps::movePositions(&particleAt(0), kParticles, rest, byDt, mError);
+    Core::moveParticles(&particleAt(0), kParticles,
+                        UniformStore::uniform(), byDt);
   }
 
   // During a step, for contact generators: multiplies by the step's dt.
@@ -881,40 +853,15 @@ class World
 
   // isLive, and records a stale or invalid handle.
   bool check(ParticleId id) {
-    if (isLive(id)) return true;
-    mError |= WorldError::kStaleHandle;
-    TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
-    return false;
+    return Core::checkParticle(&particleAt(0), kParticles, id);
   }
 
-  // integrate(), out of line in a world with contacts, as the resolver is
-  // (see Resolver::resolve()); elsewhere (no resolver) the call would only
-  // cost.
-  TINYPARTICLE_NOINLINE void integrateApart(const Scaler<S>& byDt,
-                                            bool andMove) {
-    integrate(byDt, andMove);
-  }
-
+  // v += a dt (and, without rods, x += v dt) for every movable particle:
+  // WorldCore's routine, shared by the world types of this S and Dim.
   void integrate(const Scaler<S>& byDt, bool andMove) {
     TINYPARTICLE_PROFILE_BEGIN(kProfileIntegrate);
-    // The uniform acceleration's share, the same for every particle.
-    Vec uniformStep;
-    if (kForces != 0) {
-      const Vec& uniform = UniformStore::uniform();
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (!detail::isZero(uniform[k])) uniformStep[k] = byDt(uniform[k]);
-      }
-      // With rods, half of it now and the rest after the positions move
-      // (movePositions()): kick, drift, kick, the step of RATTLE, whose
-      // energy error is second order in dt.
-      if (!andMove) {
-        for (uint8_t k = 0; k < Dim; ++k) {
-          uniformStep[k] = detail::half(uniformStep[k]);
-        }
-      }
-    }
-    Steps::template integrate<kConstraints == 0>(
-        &particleAt(0), kParticles, uniformStep, byDt, andMove, mError);
+    Core::template integrateParticles<kConstraints == 0>(
+        &particleAt(0), kParticles, UniformStore::uniform(), byDt, andMove);
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
   }
 
@@ -922,9 +869,6 @@ class World
   // x += v dt (see ParticleSteps::move()).
   bool moveParticle(ParticleType& p, const Scaler<S>& byDt) {
     return Steps::move(p, byDt, mError);
-  }
-  void checkFiniteAfterContacts() {
-    Steps::checkFinite(&particleAt(0), kParticles, mError);
   }
 
   // For WorldAccess (force slots: the renderer; the uniform acceleration:
@@ -1168,11 +1112,6 @@ class World
     }
   }
 
-  // The 16-bit field first: no padding byte between the fields.
-  uint16_t mError;
-  uint8_t mContactCount;
-  uint8_t mIterationCap;
-  StepStats mStats;
 };
 
 }  // namespace tinyparticle

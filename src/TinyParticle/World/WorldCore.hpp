@@ -1,0 +1,150 @@
+// WorldCore<S, Dim>: the part of every World<S, Dim, ...> that does not
+// depend on its capacities: the error bits and step statistics, and the
+// world-side routines of the set-up and the step (adding a particle,
+// checking a handle, integrating, moving, clearing), out of line. They take
+// the particle pool as a pointer and a count, so that a sketch with two
+// World types of the same scalar and dimension links each of them once
+// (issue 12); World<...> (World.hpp) keeps the pools and the compile-time
+// choices of which features link, and calls these.
+#pragma once
+
+#include <stdint.h>
+
+#include "../Configuration.hpp"
+#include "../Contacts/Contact.hpp"
+#include "../Core/Handle.hpp"
+#include "../Core/Particle.hpp"
+#include "../Debug/Debug.hpp"
+#include "../Math/Scaler.hpp"
+#include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
+#include "ParticleSteps.hpp"
+#include "Slots.hpp"
+
+namespace tinyparticle {
+
+template <typename S, uint8_t Dim>
+class WorldCore {
+ public:
+  typedef Particle<S, Dim> ParticleType;
+
+  // WorldError bits, sticky until clearError().
+  uint16_t error() const { return mError; }
+  void clearError() { mError = 0; }
+
+ protected:
+  typedef tinyparticle::Vec<S, Dim> CoreVec;
+  typedef detail::ParticleSteps<S, Dim> Steps;
+
+  constexpr WorldCore()
+      : mError(0), mContactCount(0), mIterationCap(0), mStats() {}
+
+  // The first free slot of the pool takes a particle (in use, colliding,
+  // static when inverseMass is 0); kParticlesFull when there is none.
+  ParticleId placeParticle(ParticleType* slots,
+                                                 uint8_t count,
+                                                 const CoreVec& position,
+                                                 S inverseMass, S radius) {
+    slots = detail::throughPointer(slots);
+    for (uint8_t i = 0; i < count; ++i) {
+      ParticleType& p = slots[i];
+      if (p.inUse()) continue;
+      const uint8_t generation = p.generation;
+      p = ParticleType();
+      p.generation = generation;
+      p.position = position;
+      p.inverseMass = inverseMass;
+      p.radius = radius;
+      p.flags = ParticleType::kInUse | ParticleType::kCollides;
+      if (inverseMass == S()) p.flags |= ParticleType::kStatic;
+      return ParticleId(i, generation);
+    }
+    mError |= WorldError::kParticlesFull;
+    TINYPARTICLE_DEBUG_PRINT("particle pool full");
+    return ParticleId();
+  }
+
+  // Whether the handle names a live particle of the pool.
+  static bool isLiveIn(const ParticleType* slots, uint8_t count,
+                       ParticleId id) {
+    return id.index < count && slots[id.index].inUse() &&
+           slots[id.index].generation == id.generation;
+  }
+  // The same, and a stale or invalid handle is recorded (kStaleHandle).
+  bool checkParticle(const ParticleType* slots,
+                                           uint8_t count, ParticleId id) {
+    if (isLiveIn(slots, count, id)) return true;
+    mError |= WorldError::kStaleHandle;
+    TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
+    return false;
+  }
+
+  // The step's first pass: a particle is static while its inverse mass is
+  // 0 (a sketch may change the mass between steps).
+  static void markStatic(ParticleType* slots,
+                                               uint8_t count) {
+    slots = detail::throughPointer(slots);
+    for (uint8_t i = 0; i < count; ++i) {
+      ParticleType& p = slots[i];
+      p.flags = detail::isZero(p.inverseMass)
+                    ? uint8_t(p.flags | ParticleType::kStatic)
+                    : uint8_t(p.flags & ~ParticleType::kStatic);
+    }
+  }
+
+  // v += (a + uniform) dt, damping, and x += v dt unless `andMove` is
+  // false (rods: their solver moves the particles, movePositions(), and
+  // only half of the uniform kick comes now, the rest after the move:
+  // kick, drift, kick, the step of RATTLE, whose energy error is second
+  // order in dt). kMoveHere as in ParticleSteps::integrate().
+  template <bool kMoveHere>
+  void integrateParticles(ParticleType* slots,
+                                                uint8_t count,
+                                                const CoreVec& uniform,
+                                                const Scaler<S>& byDt,
+                                                bool andMove) {
+    slots = detail::throughPointer(slots);
+    CoreVec uniformStep;
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (detail::isZero(uniform[k])) continue;
+      const S whole = byDt(uniform[k]);
+      uniformStep[k] = andMove ? whole : detail::half(whole);
+    }
+    Steps::template integrate<kMoveHere>(slots, count, uniformStep, byDt,
+                                         andMove, mError);
+  }
+
+  // For the rod solver: x += v dt for every movable particle, then the
+  // rest of the uniform acceleration's kick (integrateParticles() gave the
+  // first half).
+  void moveParticles(ParticleType* slots, uint8_t count,
+                                           const CoreVec& uniform,
+                                           const Scaler<S>& byDt) {
+    CoreVec rest;
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (detail::isZero(uniform[k])) continue;
+      const S whole = byDt(uniform[k]);
+      rest[k] = whole - detail::half(whole);
+    }
+    Steps::movePositions(slots, count, rest, byDt, mError);
+  }
+
+  // The step's last pass: with constraints (`checkFinite`), what the rods
+  // and contacts left is checked (float only, ParticleSteps::checkFinite());
+  // then the accumulators are cleared, so that forces applied between
+  // steps act in the next one.
+  void finishStep(ParticleType* slots, uint8_t count,
+                                        bool checkFinite) {
+    slots = detail::throughPointer(slots);
+    if (checkFinite) Steps::checkFinite(slots, count, mError);
+    for (uint8_t i = 0; i < count; ++i) slots[i].acceleration = CoreVec();
+  }
+
+  // The 16-bit field first: no padding byte between the fields.
+  uint16_t mError;
+  uint8_t mContactCount;
+  uint8_t mIterationCap;
+  StepStats mStats;
+};
+
+}  // namespace tinyparticle
