@@ -71,8 +71,9 @@ class WorldCore {
            slots[id.index].generation == id.generation;
   }
   // The same, and a stale or invalid handle is recorded (kStaleHandle).
-  bool checkParticle(const ParticleType* slots,
+  TINYPARTICLE_NOINLINE bool checkParticle(const ParticleType* slots,
                                            uint8_t count, ParticleId id) {
+    slots = detail::throughPointer(slots);
     if (isLiveIn(slots, count, id)) return true;
     mError |= WorldError::kStaleHandle;
     TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
