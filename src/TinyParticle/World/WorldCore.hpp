@@ -82,7 +82,7 @@ class WorldCore {
 
   // The step's first pass: a particle is static while its inverse mass is
   // 0 (a sketch may change the mass between steps).
-  static void markStatic(ParticleType* slots,
+  TINYPARTICLE_NOINLINE static void markStatic(ParticleType* slots,
                                                uint8_t count) {
     slots = detail::throughPointer(slots);
     for (uint8_t i = 0; i < count; ++i) {
@@ -134,7 +134,7 @@ class WorldCore {
   // and contacts left is checked (float only, ParticleSteps::checkFinite());
   // then the accumulators are cleared, so that forces applied between
   // steps act in the next one.
-  void finishStep(ParticleType* slots, uint8_t count,
+  TINYPARTICLE_NOINLINE void finishStep(ParticleType* slots, uint8_t count,
                                         bool checkFinite) {
     slots = detail::throughPointer(slots);
     if (checkFinite) Steps::checkFinite(slots, count, mError);
