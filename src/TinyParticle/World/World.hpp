@@ -63,10 +63,7 @@ template <typename S, uint8_t Dim, uint8_t kParticles, uint8_t kForces = 0,
           uint8_t kConstraints = 0, uint8_t kContacts = 0>
 class World
     : private detail::Pool<Particle<S, Dim>, kParticles>,
-      private detail::Pool<
-          ForceSlot<S, Dim,
-                    World<S, Dim, kParticles, kForces, kConstraints, kContacts> >,
-          kForces>,
+      private detail::Pool<ForceSlot<S, Dim>, kForces>,
       private detail::Pool<
           ConstraintSlot<
               S, Dim,
@@ -96,7 +93,7 @@ class World
   typedef tinyparticle::Vec<S, Dim> Vec;
   typedef Particle<S, Dim> ParticleType;
   typedef Contact<S, Dim> ContactType;
-  typedef tinyparticle::ForceSlot<S, Dim, World> ForceSlot;
+  typedef tinyparticle::ForceSlot<S, Dim> ForceSlot;
   typedef tinyparticle::ConstraintSlot<S, Dim, World> ConstraintSlot;
   typedef LinkParams<S, Dim> LinkParamsType;
 
@@ -118,6 +115,8 @@ class World
   typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
       SleepStore;
   typedef GravityForce<S, Dim> GravityType;
+  // What the force runners take in place of the world (World/Slots.hpp).
+  typedef ForceStep<S, Dim> Forces;
   // The step's work on the particles, shared by every World<S, Dim, ...>:
   // the routines of WorldCore, and the algorithms they run.
   typedef WorldCore<S, Dim> Core;
@@ -231,14 +230,14 @@ class World
   ForceId addGravity() { return addGravity(standardGravity()); }
   ForceId addGravity(const Vec& acceleration) {
     return placeForce(kAllIndex, kNoIndex, GravityType::make(acceleration),
-                      &GravityType::template runUniform<World>);
+                      &GravityType::template runUniform<Forces>);
   }
   // Gravity for one particle, standard gravity times `multiplier`.
   ForceId addGravity(ParticleId target, S multiplier = S(1)) {
     if (!check(target)) return ForceId();
     return placeForce(target.index, kNoIndex,
                       GravityType::make(standardGravity() * multiplier),
-                      &GravityType::template runOn<World>);
+                      &GravityType::template runOn<Forces>);
   }
 
   // Drag k1 |v| + k2 |v|^2 against the velocity, on every particle or one.
@@ -325,7 +324,7 @@ class World
       return ForceId();
     }
     return placeForce(target.index, kNoIndex, CustomForce<S, Dim>::make(force),
-                      &CustomForce<S, Dim>::template run<World>);
+                      &CustomForce<S, Dim>::template run<Forces>);
   }
 
   // A force generator of the sketch's own (extras/doc/design.md, "Adding a
@@ -338,19 +337,19 @@ class World
   // sketch may change its fields at any time. Errors as for the others.
   template <class G>
   ForceId addForce(G& generator) {
-    return placeSketchForce<EachForceRunner<World, G, InSketch> >(
+    return placeSketchForce<EachForceRunner<Forces, G, InSketch> >(
         kAllIndex, kNoIndex, &generator);
   }
   template <class G>
   ForceId addForce(G& generator, ParticleId target) {
     if (!check(target)) return ForceId();
-    return placeSketchForce<ForceRunner<World, G, InSketch> >(
+    return placeSketchForce<ForceRunner<Forces, G, InSketch> >(
         target.index, kNoIndex, &generator);
   }
   template <class G>
   ForceId addForce(G& generator, ParticleId a, ParticleId b) {
     if (!checkPair(a, b)) return ForceId();
-    return placeSketchForce<PairForceRunner<World, G, InSketch> >(
+    return placeSketchForce<PairForceRunner<Forces, G, InSketch> >(
         a.index, b.index, &generator);
   }
 
@@ -529,9 +528,10 @@ class World
     Core::markStatic(&particleAt(0), kParticles);
     TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
     UniformStore::clearUniform();
-    for (uint8_t i = 0; i < kForces; ++i) {
-      ForceSlot& f = forceAt(i);
-      if (f.apply != nullptr) f.apply(*this, f, dt);
+    if (kForces != 0) {
+      Forces forces = {&particleAt(0), UniformStore::uniformPointer(),
+                       kParticles};
+      Core::runForces(&forceAt(0), kForces, forces, dt);
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
@@ -877,23 +877,6 @@ class World
   const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
   void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
 
-  ForceSlot* newForce(ForceId& id, uint8_t a, uint8_t b) {
-    static_assert(kForces > 0,
-                  "this World has no force slot: World<S, Dim, particles, "
-                  "forces, constraints, contacts> needs forces > 0 for "
-                  "gravity, drag, springs, buoyancy and custom forces");
-    for (uint8_t i = 0; i < kForces; ++i) {
-      ForceSlot& f = forceAt(i);
-      if (f.inUse()) continue;
-      f.a = a;
-      f.b = b;
-      id = ForceId(i, f.generation);
-      return &f;
-    }
-    mError |= WorldError::kForcesFull;
-    TINYPARTICLE_DEBUG_PRINT("force pool full");
-    return nullptr;
-  }
 
   // Empties a particle, force or constraint slot; its generation moves on,
   // so the handles to it become stale.
@@ -929,12 +912,15 @@ class World
   template <class G>
   ForceId placeForce(uint8_t a, uint8_t b, const G& generator,
                      typename ForceSlot::Apply apply) {
+    static_assert(kForces > 0,
+                  "this World has no force slot: World<S, Dim, particles, "
+                  "forces, constraints, contacts> needs forces > 0 for "
+                  "gravity, drag, springs, buoyancy and custom forces");
     ForceId id;
-    ForceSlot* f = newForce(id, a, b);
-    if (f == nullptr) return id;
-    f->params.template as<G>() = generator;
-    f->kind = KindOf<G, typename ForceSlot::Params>::value;
-    f->apply = apply;
+    ForceSlot* f = Core::newForce(&forceAt(0), kForces, id, a, b,
+                                  KindOf<G, typename ForceSlot::Params>::value,
+                                  apply);
+    if (f != nullptr) f->params.template as<G>() = generator;
     return id;
   }
   // ... run for particle a by the ForceRunner (b: kNoIndex, or
@@ -942,20 +928,20 @@ class World
   template <class G>
   ForceId placeForceOn(uint8_t a, uint8_t b, const G& generator) {
     return placeForce(a, b, generator,
-                      &ForceRunner<World, G, InSlot>::apply);
+                      &ForceRunner<Forces, G, InSlot>::apply);
   }
   // ... run for every movable particle by the EachForceRunner.
   template <class G>
   ForceId placeForceOnEach(const G& generator) {
     return placeForce(kAllIndex, kNoIndex, generator,
-                      &EachForceRunner<World, G, InSlot>::apply);
+                      &EachForceRunner<Forces, G, InSlot>::apply);
   }
   // ... run for the pair a, b by the PairForceRunner.
   template <class G>
   ForceId placePairForce(ParticleId a, ParticleId b, const G& generator) {
     if (!checkPair(a, b)) return ForceId();
     return placeForce(a.index, b.index, generator,
-                      &PairForceRunner<World, G, InSlot>::apply);
+                      &PairForceRunner<Forces, G, InSlot>::apply);
   }
   // A sketch's generator: the slot holds a pointer to it.
   template <class Runner, class G>

@@ -80,6 +80,40 @@ class WorldCore {
     return false;
   }
 
+  typedef tinyparticle::ForceSlot<S, Dim> CoreForceSlot;
+
+  // The first free force slot takes a generator of the given kind and
+  // runner (its parameters are the caller's to copy: their class is known
+  // there); null and kForcesFull when there is none.
+  TINYPARTICLE_NOINLINE CoreForceSlot* newForce(
+      CoreForceSlot* slots, uint8_t count, ForceId& id, uint8_t a, uint8_t b,
+      uint8_t kind, typename CoreForceSlot::Apply apply) {
+    slots = detail::throughPointer(slots);
+    for (uint8_t i = 0; i < count; ++i) {
+      CoreForceSlot& f = slots[i];
+      if (f.inUse()) continue;
+      f.apply = apply;
+      f.a = a;
+      f.b = b;
+      f.kind = kind;
+      id = ForceId(i, f.generation);
+      return &f;
+    }
+    mError |= WorldError::kForcesFull;
+    TINYPARTICLE_DEBUG_PRINT("force pool full");
+    return nullptr;
+  }
+
+  // The step's force generators, each once (they add to the particles'
+  // accumulators and to the uniform acceleration).
+  static void runForces(CoreForceSlot* slots, uint8_t count,
+                        ForceStep<S, Dim>& forces, S dt) {
+    for (uint8_t i = 0; i < count; ++i) {
+      CoreForceSlot& f = slots[i];
+      if (f.apply != nullptr) f.apply(forces, f, dt);
+    }
+  }
+
   // The step's first pass: a particle is static while its inverse mass is
   // 0 (a sketch may change the mass between steps).
   TINYPARTICLE_NOINLINE static void markStatic(ParticleType* slots,
