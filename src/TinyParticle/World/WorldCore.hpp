@@ -75,6 +75,10 @@ class WorldCore {
                                            uint8_t count, ParticleId id) {
     slots = detail::throughPointer(slots);
     if (isLiveIn(slots, count, id)) return true;
+    return staleParticle();
+  }
+  // A handle that names no live particle: kStaleHandle, false.
+  bool staleParticle() {
     mError |= WorldError::kStaleHandle;
     TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
     return false;
