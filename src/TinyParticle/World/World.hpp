@@ -855,9 +855,7 @@ class World
   // (A world without particle slots says so at compile time, so that what
   // follows a successful check is seen to be dead code there.)
   bool check(ParticleId id) {
-    return kParticles != 0
-               ? Core::checkParticle(&particleAt(0), kParticles, id)
-               : Core::staleParticle();
+    return isLive(id) || Core::staleParticle();
   }
 
   // v += a dt (and, without rods, x += v dt) for every movable particle:

@@ -89,10 +89,9 @@ class WorldCore {
   // The first free force slot takes a generator of the given kind and
   // runner (its parameters are the caller's to copy: their class is known
   // there); null and kForcesFull when there is none.
-  TINYPARTICLE_NOINLINE CoreForceSlot* newForce(
-      CoreForceSlot* slots, uint8_t count, ForceId& id, uint8_t a, uint8_t b,
-      uint8_t kind, typename CoreForceSlot::Apply apply) {
-    slots = detail::throughPointer(slots);
+  CoreForceSlot* newForce(CoreForceSlot* slots, uint8_t count, ForceId& id,
+                          uint8_t a, uint8_t b, uint8_t kind,
+                          typename CoreForceSlot::Apply apply) {
     for (uint8_t i = 0; i < count; ++i) {
       CoreForceSlot& f = slots[i];
       if (f.inUse()) continue;
@@ -120,9 +119,8 @@ class WorldCore {
 
   // The step's first pass: a particle is static while its inverse mass is
   // 0 (a sketch may change the mass between steps).
-  TINYPARTICLE_NOINLINE static void markStatic(ParticleType* slots,
+  static void markStatic(ParticleType* slots,
                                                uint8_t count) {
-    slots = detail::throughPointer(slots);
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
       p.flags = detail::isZero(p.inverseMass)
@@ -172,7 +170,7 @@ class WorldCore {
   // and contacts left is checked (float only, ParticleSteps::checkFinite());
   // then the accumulators are cleared, so that forces applied between
   // steps act in the next one.
-  TINYPARTICLE_NOINLINE void finishStep(ParticleType* slots, uint8_t count,
+  void finishStep(ParticleType* slots, uint8_t count,
                                         bool checkFinite) {
     slots = detail::throughPointer(slots);
     if (checkFinite) Steps::checkFinite(slots, count, mError);
