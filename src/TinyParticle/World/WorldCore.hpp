@@ -1,11 +1,15 @@
 // WorldCore<S, Dim>: the part of every World<S, Dim, ...> that does not
 // depend on its capacities: the error bits and step statistics, and the
-// world-side routines of the set-up and the step (adding a particle,
-// checking a handle, integrating, moving, clearing), out of line. They take
-// the particle pool as a pointer and a count, so that a sketch with two
-// World types of the same scalar and dimension links each of them once
-// (issue 12); World<...> (World.hpp) keeps the pools and the compile-time
-// choices of which features link, and calls these.
+// world-side routines of the set-up and the step (placing a particle or a
+// force, integrating, moving, marking statics, finishing a step). They take
+// their pool as a pointer and a count, so that two World types of the same
+// scalar and dimension in one sketch share them (issue 12): the compiler
+// keeps one copy of the large ones and inlines the small ones, where a call
+// would cost more than it shares. World<...> (World.hpp) keeps the pools
+// and the compile-time choices of which features link, and calls these. A
+// routine that hides its pool's address (detail::throughPointer()) reads it
+// through the pointer in every sketch: smaller than the constant addresses
+// of each field when the pool has more than one slot.
 #pragma once
 
 #include <stdint.h>
@@ -28,10 +32,6 @@ class WorldCore {
  public:
   typedef Particle<S, Dim> ParticleType;
 
-  // WorldError bits, sticky until clearError().
-  uint16_t error() const { return mError; }
-  void clearError() { mError = 0; }
-
  protected:
   typedef tinyparticle::Vec<S, Dim> CoreVec;
   typedef detail::ParticleSteps<S, Dim> Steps;
@@ -41,10 +41,8 @@ class WorldCore {
 
   // The first free slot of the pool takes a particle (in use, colliding,
   // static when inverseMass is 0); kParticlesFull when there is none.
-  ParticleId placeParticle(ParticleType* slots,
-                                                 uint8_t count,
-                                                 const CoreVec& position,
-                                                 S inverseMass, S radius) {
+  ParticleId placeParticle(ParticleType* slots, uint8_t count,
+                           const CoreVec& position, S inverseMass, S radius) {
     slots = detail::throughPointer(slots);
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
@@ -64,20 +62,8 @@ class WorldCore {
     return ParticleId();
   }
 
-  // Whether the handle names a live particle of the pool.
-  static bool isLiveIn(const ParticleType* slots, uint8_t count,
-                       ParticleId id) {
-    return id.index < count && slots[id.index].inUse() &&
-           slots[id.index].generation == id.generation;
-  }
-  // The same, and a stale or invalid handle is recorded (kStaleHandle).
-  TINYPARTICLE_NOINLINE bool checkParticle(const ParticleType* slots,
-                                           uint8_t count, ParticleId id) {
-    slots = detail::throughPointer(slots);
-    if (isLiveIn(slots, count, id)) return true;
-    return staleParticle();
-  }
-  // A handle that names no live particle: kStaleHandle, false.
+  // A handle that names no live particle (World::check()): kStaleHandle,
+  // false.
   bool staleParticle() {
     mError |= WorldError::kStaleHandle;
     TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
@@ -119,8 +105,7 @@ class WorldCore {
 
   // The step's first pass: a particle is static while its inverse mass is
   // 0 (a sketch may change the mass between steps).
-  static void markStatic(ParticleType* slots,
-                                               uint8_t count) {
+  static void markStatic(ParticleType* slots, uint8_t count) {
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
       p.flags = detail::isZero(p.inverseMass)
@@ -135,11 +120,9 @@ class WorldCore {
   // kick, drift, kick, the step of RATTLE, whose energy error is second
   // order in dt). kMoveHere as in ParticleSteps::integrate().
   template <bool kMoveHere>
-  void integrateParticles(ParticleType* slots,
-                                                uint8_t count,
-                                                const CoreVec& uniform,
-                                                const Scaler<S>& byDt,
-                                                bool andMove) {
+  void integrateParticles(ParticleType* slots, uint8_t count,
+                          const CoreVec& uniform, const Scaler<S>& byDt,
+                          bool andMove) {
     slots = detail::throughPointer(slots);
     CoreVec uniformStep;
     for (uint8_t k = 0; k < Dim; ++k) {
@@ -155,8 +138,7 @@ class WorldCore {
   // rest of the uniform acceleration's kick (integrateParticles() gave the
   // first half).
   void moveParticles(ParticleType* slots, uint8_t count,
-                                           const CoreVec& uniform,
-                                           const Scaler<S>& byDt) {
+                     const CoreVec& uniform, const Scaler<S>& byDt) {
     CoreVec rest;
     for (uint8_t k = 0; k < Dim; ++k) {
       if (detail::isZero(uniform[k])) continue;
@@ -170,8 +152,7 @@ class WorldCore {
   // and contacts left is checked (float only, ParticleSteps::checkFinite());
   // then the accumulators are cleared, so that forces applied between
   // steps act in the next one.
-  void finishStep(ParticleType* slots, uint8_t count,
-                                        bool checkFinite) {
+  void finishStep(ParticleType* slots, uint8_t count, bool checkFinite) {
     slots = detail::throughPointer(slots);
     if (checkFinite) Steps::checkFinite(slots, count, mError);
     for (uint8_t i = 0; i < count; ++i) slots[i].acceleration = CoreVec();
