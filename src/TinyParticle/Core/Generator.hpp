@@ -159,6 +159,10 @@ struct InSketch {
   }
 };
 
+// The force runners' W is the step's ForceStep<S, Dim> (World/Slots.hpp),
+// the same type for every world of that scalar and dimension; the contact
+// runners' W is the world.
+
 // Runs a force on particle a: g.apply(p, dt), unless p is immovable.
 template <class W, class G, class Where>
 struct ForceRunner {
@@ -178,7 +182,7 @@ struct EachForceRunner {
   static void apply(W& world, typename W::ForceSlot& slot,
                     typename W::Scalar dt) {
     G& g = Where::template of<G>(slot);
-    for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+    for (uint8_t i = 0; i < world.particleCount; ++i) {
       P& p = WorldAccess::particle(world, i);
       if ((p.flags & (P::kInUse | P::kStatic)) == P::kInUse) g.apply(p, dt);
     }

@@ -17,6 +17,7 @@
 #include "../Contacts/Link.hpp"
 #include "../Contacts/Plane.hpp"
 #include "../Core/Generator.hpp"
+#include "../Core/Particle.hpp"
 #include "../Forces/Buoyancy.hpp"
 #include "../Forces/CustomForce.hpp"
 #include "../Forces/Drag.hpp"
@@ -58,10 +59,35 @@ struct ConstraintParamList {
       Type;
 };
 
-// W is the world type; it is incomplete here, which is fine for a pointer.
-template <typename S, uint8_t Dim, class W>
+template <typename S, uint8_t Dim>
+struct ForceSlot;
+
+// What a force generator's runner sees of the world during a step: the
+// particle pool and the step's uniform acceleration (gravity on every
+// particle adds to it). World::step() builds one on the stack. The runners
+// take it instead of the world, so that every World<S, Dim, ...> type
+// shares the force slots' type, the runners and the code that places and
+// runs them (issue 12).
+template <typename S, uint8_t Dim>
+struct ForceStep {
+  typedef S Scalar;
+  typedef tinyparticle::Vec<S, Dim> Vec;
+  typedef Particle<S, Dim> ParticleType;
+  typedef tinyparticle::ForceSlot<S, Dim> ForceSlot;
+
+  ParticleType* particles;
+  Vec* uniform;
+  uint8_t particleCount;
+
+  // For WorldAccess, as a world's.
+  ParticleType& particleAt(uint8_t i) { return particles[i]; }
+  void addUniformAcceleration(const Vec& a) { *uniform += a; }
+};
+
+// The same for every world of this scalar and dimension.
+template <typename S, uint8_t Dim>
 struct ForceSlot {
-  typedef void (*Apply)(W& world, ForceSlot& slot, S dt);
+  typedef void (*Apply)(ForceStep<S, Dim>& forces, ForceSlot& slot, S dt);
   typedef typename ForceParamList<S, Dim>::Type Params;
 
   Apply apply;         // null: the slot is free

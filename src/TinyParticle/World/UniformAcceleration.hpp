@@ -18,6 +18,7 @@ struct UniformAcceleration {
 
   constexpr UniformAcceleration() : mUniform() {}
   const V& uniform() const { return mUniform; }
+  V* uniformPointer() { return &mUniform; }
   template <typename S>
   S uniformComponent(S V::*component) const { return mUniform.*component; }
   void clearUniform() { mUniform = V(); }
@@ -28,6 +29,7 @@ template <class V>
 struct UniformAcceleration<V, false> {
   constexpr UniformAcceleration() {}
   V uniform() const { return V(); }
+  V* uniformPointer() { return nullptr; }
   template <typename S>
   S uniformComponent(S V::*) const { return S(); }
   void clearUniform() {}

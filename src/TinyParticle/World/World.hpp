@@ -55,6 +55,7 @@
 #include "Sleep.hpp"
 #include "Slots.hpp"
 #include "UniformAcceleration.hpp"
+#include "WorldCore.hpp"
 
 namespace tinyparticle {
 
@@ -62,10 +63,7 @@ template <typename S, uint8_t Dim, uint8_t kParticles, uint8_t kForces = 0,
           uint8_t kConstraints = 0, uint8_t kContacts = 0>
 class World
     : private detail::Pool<Particle<S, Dim>, kParticles>,
-      private detail::Pool<
-          ForceSlot<S, Dim,
-                    World<S, Dim, kParticles, kForces, kConstraints, kContacts> >,
-          kForces>,
+      private detail::Pool<ForceSlot<S, Dim>, kForces>,
       private detail::Pool<
           ConstraintSlot<
               S, Dim,
@@ -81,7 +79,9 @@ class World
       private detail::SleepState<
           bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
                    S),
-          (kConstraints > 0)> {
+          (kConstraints > 0)>,
+      // Last, so that its fields come after the pools, as members would.
+      private WorldCore<S, Dim> {
   static_assert(IsScalar<S>::value, TINYPARTICLE_SCALAR_MESSAGE);
   static_assert(Dim == 2 || Dim == 3, "World is 2D or 3D");
   static_assert(kParticles < kAnchorIndex && kForces < kAnchorIndex &&
@@ -93,7 +93,7 @@ class World
   typedef tinyparticle::Vec<S, Dim> Vec;
   typedef Particle<S, Dim> ParticleType;
   typedef Contact<S, Dim> ContactType;
-  typedef tinyparticle::ForceSlot<S, Dim, World> ForceSlot;
+  typedef tinyparticle::ForceSlot<S, Dim> ForceSlot;
   typedef tinyparticle::ConstraintSlot<S, Dim, World> ConstraintSlot;
   typedef LinkParams<S, Dim> LinkParamsType;
 
@@ -115,18 +115,22 @@ class World
   typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
       SleepStore;
   typedef GravityForce<S, Dim> GravityType;
-  // The step's work on the particles, shared by every World<S, Dim, ...>.
+  // What the force runners take in place of the world (World/Slots.hpp).
+  typedef ForceStep<S, Dim> Forces;
+  // The step's work on the particles, shared by every World<S, Dim, ...>:
+  // the routines of WorldCore, and the algorithms they run.
+  typedef WorldCore<S, Dim> Core;
   typedef detail::ParticleSteps<S, Dim> Steps;
+  using Core::mError;
+  using Core::mContactCount;
+  using Core::mIterationCap;
+  using Core::mStats;
   // Generators and the renderer reach the slots and the step's uniform
   // acceleration through it (Core/Access.hpp).
   friend class WorldAccess;
 
  public:
-  constexpr World()
-      : mError(0),
-        mContactCount(0),
-        mIterationCap(0),
-        mStats() {}
+  constexpr World() {}
 
   // The standard gravity of every scene: 9.81 m/s^2 along -y.
   static Vec standardGravity() {
@@ -161,23 +165,8 @@ class World
     static_assert(kParticles > 0,
                   "this World has no particle slot: World<S, Dim, particles, "
                   "forces, constraints, contacts> needs particles > 0");
-    ParticleType* const slots = detail::throughPointer(&particleAt(0));
-    for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = slots[i];
-      if (p.inUse()) continue;
-      const uint8_t generation = p.generation;
-      p = ParticleType();
-      p.generation = generation;
-      p.position = position;
-      p.inverseMass = inverseMass;
-      p.radius = radius;
-      p.flags = ParticleType::kInUse | ParticleType::kCollides;
-      if (inverseMass == S()) p.flags |= ParticleType::kStatic;
-      return ParticleId(i, generation);
-    }
-    mError |= WorldError::kParticlesFull;
-    TINYPARTICLE_DEBUG_PRINT("particle pool full");
-    return ParticleId();
+    return Core::placeParticle(&particleAt(0), kParticles, position,
+                               inverseMass, radius);
   }
 
   // The particle, or null if the id is invalid or stale.
@@ -241,14 +230,14 @@ class World
   ForceId addGravity() { return addGravity(standardGravity()); }
   ForceId addGravity(const Vec& acceleration) {
     return placeForce(kAllIndex, kNoIndex, GravityType::make(acceleration),
-                      &GravityType::template runUniform<World>);
+                      &GravityType::template runUniform<Forces>);
   }
   // Gravity for one particle, standard gravity times `multiplier`.
   ForceId addGravity(ParticleId target, S multiplier = S(1)) {
     if (!check(target)) return ForceId();
     return placeForce(target.index, kNoIndex,
                       GravityType::make(standardGravity() * multiplier),
-                      &GravityType::template runOn<World>);
+                      &GravityType::template runOn<Forces>);
   }
 
   // Drag k1 |v| + k2 |v|^2 against the velocity, on every particle or one.
@@ -335,7 +324,7 @@ class World
       return ForceId();
     }
     return placeForce(target.index, kNoIndex, CustomForce<S, Dim>::make(force),
-                      &CustomForce<S, Dim>::template run<World>);
+                      &CustomForce<S, Dim>::template run<Forces>);
   }
 
   // A force generator of the sketch's own (extras/doc/design.md, "Adding a
@@ -348,19 +337,19 @@ class World
   // sketch may change its fields at any time. Errors as for the others.
   template <class G>
   ForceId addForce(G& generator) {
-    return placeSketchForce<EachForceRunner<World, G, InSketch> >(
+    return placeSketchForce<EachForceRunner<Forces, G, InSketch> >(
         kAllIndex, kNoIndex, &generator);
   }
   template <class G>
   ForceId addForce(G& generator, ParticleId target) {
     if (!check(target)) return ForceId();
-    return placeSketchForce<ForceRunner<World, G, InSketch> >(
+    return placeSketchForce<ForceRunner<Forces, G, InSketch> >(
         target.index, kNoIndex, &generator);
   }
   template <class G>
   ForceId addForce(G& generator, ParticleId a, ParticleId b) {
     if (!checkPair(a, b)) return ForceId();
-    return placeSketchForce<PairForceRunner<World, G, InSketch> >(
+    return placeSketchForce<PairForceRunner<Forces, G, InSketch> >(
         a.index, b.index, &generator);
   }
 
@@ -536,17 +525,13 @@ class World
       return;
     }
     TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
-    for (uint8_t i = 0; i < kParticles; ++i) {
-      ParticleType& p = particleAt(i);
-      p.flags = detail::isZero(p.inverseMass)
-                    ? uint8_t(p.flags | ParticleType::kStatic)
-                    : uint8_t(p.flags & ~ParticleType::kStatic);
-    }
+    Core::markStatic(&particleAt(0), kParticles);
     TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
     UniformStore::clearUniform();
-    for (uint8_t i = 0; i < kForces; ++i) {
-      ForceSlot& f = forceAt(i);
-      if (f.apply != nullptr) f.apply(*this, f, dt);
+    if (kForces != 0) {
+      Forces forces = {&particleAt(0), UniformStore::uniformPointer(),
+                       kParticles};
+      Core::runForces(&forceAt(0), kForces, forces, dt);
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
@@ -562,11 +547,7 @@ class World
     // With rods, the positions move after the rods' velocity solve, so that
     // each moves once, rounded once (the solver calls movePositions()).
     const RodSolve solveRods = RodStore::rodSolver();
-    if (kConstraints != 0 && kContacts != 0) {
-      integrateApart(byDt, solveRods == nullptr);
-    } else {
-      integrate(byDt, solveRods == nullptr);
-    }
+    integrate(byDt, solveRods == nullptr);
     if (kConstraints != 0) {
       if (solveRods != nullptr) {
         TINYPARTICLE_PROFILE_BEGIN(kProfileRods);
@@ -597,8 +578,7 @@ class World
       SleepStore::setInContacts(false);
       TINYPARTICLE_PROFILE_END(kProfileResolve);
     }
-    if (kConstraints != 0) checkFiniteAfterContacts();
-    for (uint8_t i = 0; i < kParticles; ++i) particleAt(i).acceleration = Vec();
+    Core::finishStep(&particleAt(0), kParticles, kConstraints != 0);
     StepScalerStore::setStepScaler(nullptr);  // byDt ends with the step
     TINYPARTICLE_PROFILE_END(kProfileStep);
   }
@@ -738,16 +718,8 @@ class World
   // rest of the uniform acceleration's kick (integrate() gave the first
   // half). The step leaves both to the solver when the world has rods.
   void movePositions(const Scaler<S>& byDt) {
-    Vec rest;
-    if (kForces != 0) {
-      const Vec& uniform = UniformStore::uniform();
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (detail::isZero(uniform[k])) continue;
-        const S whole = byDt(uniform[k]);
-        rest[k] = whole - detail::half(whole);
-      }
-    }
-    Steps::movePositions(&particleAt(0), kParticles, rest, byDt, mError);
+    Core::moveParticles(&particleAt(0), kParticles,
+                        UniformStore::uniform(), byDt);
   }
 
   // During a step, for contact generators: multiplies by the step's dt.
@@ -880,41 +852,18 @@ class World
   }
 
   // isLive, and records a stale or invalid handle.
+  // (A world without particle slots says so at compile time, so that what
+  // follows a successful check is seen to be dead code there.)
   bool check(ParticleId id) {
-    if (isLive(id)) return true;
-    mError |= WorldError::kStaleHandle;
-    TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
-    return false;
+    return isLive(id) || Core::staleParticle();
   }
 
-  // integrate(), out of line in a world with contacts, as the resolver is
-  // (see Resolver::resolve()); elsewhere (no resolver) the call would only
-  // cost.
-  TINYPARTICLE_NOINLINE void integrateApart(const Scaler<S>& byDt,
-                                            bool andMove) {
-    integrate(byDt, andMove);
-  }
-
+  // v += a dt (and, without rods, x += v dt) for every movable particle:
+  // WorldCore's routine, shared by the world types of this S and Dim.
   void integrate(const Scaler<S>& byDt, bool andMove) {
     TINYPARTICLE_PROFILE_BEGIN(kProfileIntegrate);
-    // The uniform acceleration's share, the same for every particle.
-    Vec uniformStep;
-    if (kForces != 0) {
-      const Vec& uniform = UniformStore::uniform();
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (!detail::isZero(uniform[k])) uniformStep[k] = byDt(uniform[k]);
-      }
-      // With rods, half of it now and the rest after the positions move
-      // (movePositions()): kick, drift, kick, the step of RATTLE, whose
-      // energy error is second order in dt.
-      if (!andMove) {
-        for (uint8_t k = 0; k < Dim; ++k) {
-          uniformStep[k] = detail::half(uniformStep[k]);
-        }
-      }
-    }
-    Steps::template integrate<kConstraints == 0>(
-        &particleAt(0), kParticles, uniformStep, byDt, andMove, mError);
+    Core::template integrateParticles<kConstraints == 0>(
+        &particleAt(0), kParticles, UniformStore::uniform(), byDt, andMove);
     TINYPARTICLE_PROFILE_END(kProfileIntegrate);
   }
 
@@ -923,9 +872,6 @@ class World
   bool moveParticle(ParticleType& p, const Scaler<S>& byDt) {
     return Steps::move(p, byDt, mError);
   }
-  void checkFiniteAfterContacts() {
-    Steps::checkFinite(&particleAt(0), kParticles, mError);
-  }
 
   // For WorldAccess (force slots: the renderer; the uniform acceleration:
   // gravity on every particle).
@@ -933,23 +879,6 @@ class World
   const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
   void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
 
-  ForceSlot* newForce(ForceId& id, uint8_t a, uint8_t b) {
-    static_assert(kForces > 0,
-                  "this World has no force slot: World<S, Dim, particles, "
-                  "forces, constraints, contacts> needs forces > 0 for "
-                  "gravity, drag, springs, buoyancy and custom forces");
-    for (uint8_t i = 0; i < kForces; ++i) {
-      ForceSlot& f = forceAt(i);
-      if (f.inUse()) continue;
-      f.a = a;
-      f.b = b;
-      id = ForceId(i, f.generation);
-      return &f;
-    }
-    mError |= WorldError::kForcesFull;
-    TINYPARTICLE_DEBUG_PRINT("force pool full");
-    return nullptr;
-  }
 
   // Empties a particle, force or constraint slot; its generation moves on,
   // so the handles to it become stale.
@@ -985,12 +914,15 @@ class World
   template <class G>
   ForceId placeForce(uint8_t a, uint8_t b, const G& generator,
                      typename ForceSlot::Apply apply) {
+    static_assert(kForces > 0,
+                  "this World has no force slot: World<S, Dim, particles, "
+                  "forces, constraints, contacts> needs forces > 0 for "
+                  "gravity, drag, springs, buoyancy and custom forces");
     ForceId id;
-    ForceSlot* f = newForce(id, a, b);
-    if (f == nullptr) return id;
-    f->params.template as<G>() = generator;
-    f->kind = KindOf<G, typename ForceSlot::Params>::value;
-    f->apply = apply;
+    ForceSlot* f = Core::newForce(&forceAt(0), kForces, id, a, b,
+                                  KindOf<G, typename ForceSlot::Params>::value,
+                                  apply);
+    if (f != nullptr) f->params.template as<G>() = generator;
     return id;
   }
   // ... run for particle a by the ForceRunner (b: kNoIndex, or
@@ -998,20 +930,20 @@ class World
   template <class G>
   ForceId placeForceOn(uint8_t a, uint8_t b, const G& generator) {
     return placeForce(a, b, generator,
-                      &ForceRunner<World, G, InSlot>::apply);
+                      &ForceRunner<Forces, G, InSlot>::apply);
   }
   // ... run for every movable particle by the EachForceRunner.
   template <class G>
   ForceId placeForceOnEach(const G& generator) {
     return placeForce(kAllIndex, kNoIndex, generator,
-                      &EachForceRunner<World, G, InSlot>::apply);
+                      &EachForceRunner<Forces, G, InSlot>::apply);
   }
   // ... run for the pair a, b by the PairForceRunner.
   template <class G>
   ForceId placePairForce(ParticleId a, ParticleId b, const G& generator) {
     if (!checkPair(a, b)) return ForceId();
     return placeForce(a.index, b.index, generator,
-                      &PairForceRunner<World, G, InSlot>::apply);
+                      &PairForceRunner<Forces, G, InSlot>::apply);
   }
   // A sketch's generator: the slot holds a pointer to it.
   template <class Runner, class G>
@@ -1168,11 +1100,6 @@ class World
     }
   }
 
-  // The 16-bit field first: no padding byte between the fields.
-  uint16_t mError;
-  uint8_t mContactCount;
-  uint8_t mIterationCap;
-  StepStats mStats;
 };
 
 }  // namespace tinyparticle

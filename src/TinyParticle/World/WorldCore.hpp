@@ -1,0 +1,168 @@
+// WorldCore<S, Dim>: the part of every World<S, Dim, ...> that does not
+// depend on its capacities: the error bits and step statistics, and the
+// world-side routines of the set-up and the step (placing a particle or a
+// force, integrating, moving, marking statics, finishing a step). They take
+// their pool as a pointer and a count, so that two World types of the same
+// scalar and dimension in one sketch share them (issue 12): the compiler
+// keeps one copy of the large ones and inlines the small ones, where a call
+// would cost more than it shares. World<...> (World.hpp) keeps the pools
+// and the compile-time choices of which features link, and calls these. A
+// routine that hides its pool's address (detail::throughPointer()) reads it
+// through the pointer in every sketch: smaller than the constant addresses
+// of each field when the pool has more than one slot.
+#pragma once
+
+#include <stdint.h>
+
+#include "../Configuration.hpp"
+#include "../Contacts/Contact.hpp"
+#include "../Core/Handle.hpp"
+#include "../Core/Particle.hpp"
+#include "../Debug/Debug.hpp"
+#include "../Math/Scaler.hpp"
+#include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
+#include "ParticleSteps.hpp"
+#include "Slots.hpp"
+
+namespace tinyparticle {
+
+template <typename S, uint8_t Dim>
+class WorldCore {
+ public:
+  typedef Particle<S, Dim> ParticleType;
+
+ protected:
+  typedef tinyparticle::Vec<S, Dim> CoreVec;
+  typedef detail::ParticleSteps<S, Dim> Steps;
+
+  constexpr WorldCore()
+      : mError(0), mContactCount(0), mIterationCap(0), mStats() {}
+
+  // The first free slot of the pool takes a particle (in use, colliding,
+  // static when inverseMass is 0); kParticlesFull when there is none.
+  ParticleId placeParticle(ParticleType* slots, uint8_t count,
+                           const CoreVec& position, S inverseMass, S radius) {
+    slots = detail::throughPointer(slots);
+    for (uint8_t i = 0; i < count; ++i) {
+      ParticleType& p = slots[i];
+      if (p.inUse()) continue;
+      const uint8_t generation = p.generation;
+      p = ParticleType();
+      p.generation = generation;
+      p.position = position;
+      p.inverseMass = inverseMass;
+      p.radius = radius;
+      p.flags = ParticleType::kInUse | ParticleType::kCollides;
+      if (inverseMass == S()) p.flags |= ParticleType::kStatic;
+      return ParticleId(i, generation);
+    }
+    mError |= WorldError::kParticlesFull;
+    TINYPARTICLE_DEBUG_PRINT("particle pool full");
+    return ParticleId();
+  }
+
+  // A handle that names no live particle (World::check()): kStaleHandle,
+  // false.
+  bool staleParticle() {
+    mError |= WorldError::kStaleHandle;
+    TINYPARTICLE_DEBUG_PRINT("stale or invalid particle id");
+    return false;
+  }
+
+  typedef tinyparticle::ForceSlot<S, Dim> CoreForceSlot;
+
+  // The first free force slot takes a generator of the given kind and
+  // runner (its parameters are the caller's to copy: their class is known
+  // there); null and kForcesFull when there is none.
+  CoreForceSlot* newForce(CoreForceSlot* slots, uint8_t count, ForceId& id,
+                          uint8_t a, uint8_t b, uint8_t kind,
+                          typename CoreForceSlot::Apply apply) {
+    for (uint8_t i = 0; i < count; ++i) {
+      CoreForceSlot& f = slots[i];
+      if (f.inUse()) continue;
+      f.apply = apply;
+      f.a = a;
+      f.b = b;
+      f.kind = kind;
+      id = ForceId(i, f.generation);
+      return &f;
+    }
+    mError |= WorldError::kForcesFull;
+    TINYPARTICLE_DEBUG_PRINT("force pool full");
+    return nullptr;
+  }
+
+  // The step's force generators, each once (they add to the particles'
+  // accumulators and to the uniform acceleration).
+  static void runForces(CoreForceSlot* slots, uint8_t count,
+                        ForceStep<S, Dim>& forces, S dt) {
+    for (uint8_t i = 0; i < count; ++i) {
+      CoreForceSlot& f = slots[i];
+      if (f.apply != nullptr) f.apply(forces, f, dt);
+    }
+  }
+
+  // The step's first pass: a particle is static while its inverse mass is
+  // 0 (a sketch may change the mass between steps).
+  static void markStatic(ParticleType* slots, uint8_t count) {
+    for (uint8_t i = 0; i < count; ++i) {
+      ParticleType& p = slots[i];
+      p.flags = detail::isZero(p.inverseMass)
+                    ? uint8_t(p.flags | ParticleType::kStatic)
+                    : uint8_t(p.flags & ~ParticleType::kStatic);
+    }
+  }
+
+  // v += (a + uniform) dt, damping, and x += v dt unless `andMove` is
+  // false (rods: their solver moves the particles, movePositions(), and
+  // only half of the uniform kick comes now, the rest after the move:
+  // kick, drift, kick, the step of RATTLE, whose energy error is second
+  // order in dt). kMoveHere as in ParticleSteps::integrate().
+  template <bool kMoveHere>
+  void integrateParticles(ParticleType* slots, uint8_t count,
+                          const CoreVec& uniform, const Scaler<S>& byDt,
+                          bool andMove) {
+    slots = detail::throughPointer(slots);
+    CoreVec uniformStep;
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (detail::isZero(uniform[k])) continue;
+      const S whole = byDt(uniform[k]);
+      uniformStep[k] = andMove ? whole : detail::half(whole);
+    }
+    Steps::template integrate<kMoveHere>(slots, count, uniformStep, byDt,
+                                         andMove, mError);
+  }
+
+  // For the rod solver: x += v dt for every movable particle, then the
+  // rest of the uniform acceleration's kick (integrateParticles() gave the
+  // first half).
+  void moveParticles(ParticleType* slots, uint8_t count,
+                     const CoreVec& uniform, const Scaler<S>& byDt) {
+    CoreVec rest;
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (detail::isZero(uniform[k])) continue;
+      const S whole = byDt(uniform[k]);
+      rest[k] = whole - detail::half(whole);
+    }
+    Steps::movePositions(slots, count, rest, byDt, mError);
+  }
+
+  // The step's last pass: with constraints (`checkFinite`), what the rods
+  // and contacts left is checked (float only, ParticleSteps::checkFinite());
+  // then the accumulators are cleared, so that forces applied between
+  // steps act in the next one.
+  void finishStep(ParticleType* slots, uint8_t count, bool checkFinite) {
+    slots = detail::throughPointer(slots);
+    if (checkFinite) Steps::checkFinite(slots, count, mError);
+    for (uint8_t i = 0; i < count; ++i) slots[i].acceleration = CoreVec();
+  }
+
+  // The 16-bit field first: no padding byte between the fields.
+  uint16_t mError;
+  uint8_t mContactCount;
+  uint8_t mIterationCap;
+  StepStats mStats;
+};
+
+}  // namespace tinyparticle
