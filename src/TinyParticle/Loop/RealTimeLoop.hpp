@@ -29,7 +29,7 @@
 #include "../Math/Fixed.hpp"
 #include "../Math/Float.hpp"
 #include "../Platform/Clock.hpp"
-#include "../World/Slots.hpp"  // detail::throughPointer()
+#include "../Configuration.hpp"  // detail::throughPointer()
 
 namespace tinyparticle {
 

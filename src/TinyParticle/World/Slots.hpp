@@ -150,22 +150,6 @@ struct Pool<T, 0> {
   const T& at(uint8_t) const { return *reinterpret_cast<const T*>(this); }
 };
 
-// p, hidden from the optimizer. In a pool of one slot the compiler knows
-// every field's address and loads and stores each as a constant (lds and
-// sts: 4 bytes each on AVR); through a pointer (ldd and std) they take 2
-// bytes and as many cycles. addWithInverseMass() goes through it: about
-// 70 B less for a world of one particle, and less for inlined copies in
-// larger ones. (In the step's integrator it saved 100 B more for one
-// particle but cost the spring scene 1 % of its cycles and HapticLever
-// 128 B, where the optimizer had found better code: not there.)
-template <typename T>
-inline T* throughPointer(T* p) {
-#if defined(__GNUC__)
-  asm("" : "+r"(p));
-#endif
-  return p;
-}
-
 }  // namespace detail
 
 }  // namespace tinyparticle
