@@ -142,27 +142,36 @@ struct LoneRods {
     const bool both = kTwoMovable && moving == 2;
     bool fromB;
     P& end = movingEnd<kAnchored>(world, s, fromB);  // a when both move
-    V u = Rods::linkOf(s).direction;
-    V d = Rods::span(world, s);  // from b to a: the same as rattle()'s
-    if (fromB) {
-      u = -u;
-      d = -d;
-    }
+    const V& u = Rods::linkOf(s).direction;
+    const V d = Rods::span(world, s);  // from b to a: the same as rattle()'s
     const V* w = &end.velocity;
     V relative;
     if (both) {
       relative = end.velocity;
       relative -= world.particleAt(s.b).velocity;
       w = &relative;
+    } else if (fromB) {
+      // Seen from b, the rod is -d along -u. Every product of the solve
+      // then changes sign twice or not at all, except those with the
+      // velocity: negating it instead gives the same speed and error to
+      // the bit (a product rounds symmetrically), and the change along -u
+      // is minus that along u. (Two scalars negated here rather than two
+      // vectors through Vec's operator-: 128 B less where b may move.)
+      for (uint8_t i = 0; i < V::kDimensions; ++i) relative[i] = -end.velocity[i];
+      w = &relative;
     }
     S error;
     bool turning;
-    const S speed = Rods::positionSpeed(d, *w, u, Rods::linkOf(s), pass, error,
-                                        turning);
+    S speed = Rods::positionSpeed(d, *w, u, Rods::linkOf(s), pass, error,
+                                  turning);
     if (turning) pass.turned = true;
     if (both) {
       shareBoth(world, s, speed, error);
       return;
+    }
+    if (fromB) {
+      speed = -speed;
+      error = -error;
     }
     end.velocity.addScaled(u, speed);
     if (!detail::isZero(error)) end.position.addScaled(u, error);
