@@ -25,9 +25,10 @@
 typedef BallsWorld<Q16_16, 2, 16, 24> BoxWorld;
 BoxWorld world;
 
-// 40 x 20 characters over the 1 m x 1 m box.
-AsciiRenderer<BoxWorld, 40, 20> renderer(Q16_16(0), Q16_16(0), Q16_16(0.025),
-                                         Q16_16(0.05));
+// 40 x 20 characters over the 1 m x 1 m box; no spring or rod to draw, so
+// none of the line code is linked (LinkShape::kNone).
+AsciiRenderer<BoxWorld, 40, 20, ParticleShape::kCircles, LinkShape::kNone>
+    renderer(Q16_16(0), Q16_16(0), Q16_16(0.025), Q16_16(0.05));
 // 128 steps per second (dt = 1/128 s), 8 frames per second: the one place
 // that sets the step.
 RealTimeLoop timing(128, 8);
