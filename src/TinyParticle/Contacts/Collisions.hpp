@@ -54,9 +54,11 @@
 #pragma once
 
 #include <stdint.h>
+#include <string.h>
 
 #include "../Configuration.hpp"
 #include "../Math/Fixed.hpp"
+#include "../Math/Float.hpp"
 #include "../Math/Newton.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/ScalarTraits.hpp"
@@ -66,6 +68,28 @@
 
 namespace tinyparticle {
 namespace detail {
+
+// Whether a > b, for magnitudes (a, b >= 0).
+template <typename S>
+struct MagnitudeOrder {
+  static bool greater(S a, S b) { return a > b; }
+};
+// Non-negative floats (fabs() gives them) order as their bit patterns do as
+// unsigned integers, NaN above infinity: a compare of four bytes instead of
+// a call to the float compare (the bound then costs the survey a few
+// cycles per particle more than |vx| + |vy| did).
+template <>
+struct MagnitudeOrder<Float> {
+  static bool greater(Float a, Float b) { return bitsOf(a) > bitsOf(b); }
+
+ private:
+  static uint32_t bitsOf(Float x) {
+    const float f = x.toFloat();
+    uint32_t bits;
+    memcpy(&bits, &f, sizeof(bits));
+    return bits;
+  }
+};
 
 // A bound on the speed |v| for the speed limit, without a square root: the
 // largest axis's |v_k| plus half of the others' (a >= b >= c >= 0:
@@ -79,14 +103,14 @@ struct AxisSpeed {
   typedef S Sum;
   static S of(const Vec<S, 2>& v) {
     const S a = fabs(v.x), b = fabs(v.y);
-    return a > b ? a + half(b) : b + half(a);
+    return MagnitudeOrder<S>::greater(a, b) ? a + half(b) : b + half(a);
   }
   static S of(const Vec<S, 3>& v) {
     S a = fabs(v.x), b = fabs(v.y), c = fabs(v.z);
-    if (b > a) {
+    if (MagnitudeOrder<S>::greater(b, a)) {
       const S t = a; a = b; b = t;
     }
-    if (c > a) {
+    if (MagnitudeOrder<S>::greater(c, a)) {
       const S t = a; a = c; c = t;
     }
     return a + half(b + c);
