@@ -45,6 +45,18 @@ test(TunnellingLimit_Float) {
               (int) WorldError::kTunnelling);
 }
 
+// Along the diagonal the limit is on the bound of |v| (Collisions.hpp):
+// at 0.99 of it (|v| = 0.93 r / dt, though |vx| + |vy| = 1.32 r / dt) they
+// bounce unflagged; 5 % past it the step raises kTunnelling.
+test(TunnellingDiagonal_Float) {
+  uint16_t error = 0;
+  assertTrue(Checks::tunnelDiagonal(0.99f, &error));
+  assertEqual((int) (error & WorldError::kTunnelling), 0);
+  Checks::tunnelDiagonal(1.05f, &error);
+  assertEqual((int) (error & WorldError::kTunnelling),
+              (int) WorldError::kTunnelling);
+}
+
 void setup() {
 #if !defined(EPOXY_DUINO)
   delay(1000);

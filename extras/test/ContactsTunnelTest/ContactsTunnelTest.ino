@@ -25,6 +25,18 @@ test(TunnellingLimit_Q16_16) {
               (int) WorldError::kTunnelling);
 }
 
+// Along the diagonal the limit is on the bound of |v| (Collisions.hpp):
+// at 0.99 of it (|v| = 0.93 r / dt, though |vx| + |vy| = 1.32 r / dt) they
+// bounce unflagged; 5 % past it the step raises kTunnelling.
+test(TunnellingDiagonal_Q16_16) {
+  uint16_t error = 0;
+  assertTrue(Checks::tunnelDiagonal(0.99f, &error));
+  assertEqual((int) (error & WorldError::kTunnelling), 0);
+  Checks::tunnelDiagonal(1.05f, &error);
+  assertEqual((int) (error & WorldError::kTunnelling),
+              (int) WorldError::kTunnelling);
+}
+
 void setup() {
 #if !defined(EPOXY_DUINO)
   delay(1000);

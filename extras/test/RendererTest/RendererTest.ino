@@ -53,14 +53,16 @@ struct Checks {
 
   // A rod (or a cable) from a fixed particle near the top-left corner to
   // one near the top-right corner: row 0.
-  template <bool kRod>
+  // kLinkShape: LinkShape::kLines (the default) or kNone.
+  template <bool kRod, uint8_t kLinkShape = LinkShape::kLines>
   static void link(char* out) {
     W w;
     V left(0.05, 1.9), right(1.95, 1.9);
     ParticleId a = w.addFixedParticle(left);
     ParticleId b = w.addParticle(right, S(1));
     addLink(w, a, b, BoolType<kRod>());
-    R renderer(S(0), S(0), S(0.1), S(0.2));
+    AsciiRenderer<W, 20, 10, ParticleShape::kCircles, kLinkShape> renderer(
+        S(0), S(0), S(0.1), S(0.2));
     renderer.renderRow(w, 0, out);
     out[20] = '\0';
   }
@@ -170,6 +172,13 @@ test(RodLine) {
   assertEqual(line, "+..................o");
   Checks<Float>::link<false>(line);
   assertEqual(line, "+..................o");
+}
+
+// LinkShape::kNone: the same rod is not drawn, its ends still are.
+test(LinksNotDrawn) {
+  char line[21];
+  Checks<Q16_16>::link<true, LinkShape::kNone>(line);
+  assertEqual(line, "+                  o");
 }
 
 // 10 rows plus two border lines of 22 characters and a newline each; the

@@ -19,6 +19,12 @@
 // circle code (a square root and a division per row, about 400 bytes on
 // the Nano) is not linked.
 //
+// A sketch that never draws a link (no spring, rod or cable in its world)
+// passes LinkShape::kNone as the fifth template argument: the slots are then
+// not looked at, and the line code (about 400 bytes on the Nano) is not
+// linked. (A world's type cannot tell: any force or constraint slot may hold
+// a spring or a rod at run time.)
+//
 // Draw a whole frame with draw(), or one line per call with drawLine() so
 // that a sketch never waits for a slow serial line (check that the output
 // has lineLength() bytes free first).
@@ -43,8 +49,18 @@ enum : uint8_t {
 };
 }
 
+// How the renderer draws springs, rods and cables (its fifth template
+// argument).
+namespace LinkShape {
+enum : uint8_t {
+  kLines = 0,  // a line of '.' from end to end
+  kNone = 1,   // not drawn, and no code for them linked
+};
+}
+
 template <class W, uint8_t kColumns = 40, uint8_t kRows = 20,
-          uint8_t kParticleShape = ParticleShape::kCircles>
+          uint8_t kParticleShape = ParticleShape::kCircles,
+          uint8_t kLinkShape = LinkShape::kLines>
 class AsciiRenderer {
   static_assert(kColumns >= 1 && kColumns <= 200 && kRows >= 1,
                 "1..200 columns, at least 1 row");
@@ -120,11 +136,13 @@ class AsciiRenderer {
     const Units high = Units(low + kSub);
 
     // Each generator's kind tells how it is drawn (Core/Generator.hpp).
-    for (uint8_t i = 0; i < W::kForceCapacity; ++i) {
-      drawSlot(world, WorldAccess::force(world, i), low, high, text);
-    }
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      drawSlot(world, WorldAccess::constraint(world, i), low, high, text);
+    if (kLinkShape == LinkShape::kLines) {
+      for (uint8_t i = 0; i < W::kForceCapacity; ++i) {
+        drawSlot(world, WorldAccess::force(world, i), low, high, text);
+      }
+      for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+        drawSlot(world, WorldAccess::constraint(world, i), low, high, text);
+      }
     }
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       const typename W::ParticleType& p = WorldAccess::particle(world, i);

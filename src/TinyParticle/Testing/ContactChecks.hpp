@@ -316,6 +316,24 @@ struct ContactChecks {
     return w.particle(a)->position.x < w.particle(b)->position.x;
   }
 
+  // The same along the diagonal: each ball moves along (1, 1), with
+  // |vx| = |vy| = u at `factor` times the limit of the speed bound
+  // (u + u/2 = r / dt; |v| = 0.94 r / dt, while |vx| + |vy| is 1.33 r / dt).
+  // Returns whether they kept their order along the diagonal.
+  static bool tunnelDiagonal(float factor, uint16_t* error) {
+    PairWorld w;
+    const float u = factor * 0.02f * 256 / 1.5f;
+    ParticleId a = w.addParticle(PV(0.1, 0.1), S(0.1), S(0.02));
+    ParticleId b = w.addParticle(PV(0.6037, 0.6037), S(0.1), S(0.02));
+    w.particle(a)->velocity = PV(S(u), S(u));
+    w.particle(b)->velocity = PV(S(-u), S(-u));
+    w.addCollisions(S(1));
+    for (uint16_t i = 0; i < 32; ++i) w.step(S(1.0 / 256));
+    *error = w.error();
+    return w.particle(a)->position.x + w.particle(a)->position.y <
+           w.particle(b)->position.x + w.particle(b)->position.y;
+  }
+
   // ---- Swept contacts -----------------------------------------------------
 
   struct SweptResult {
