@@ -54,7 +54,6 @@
 #pragma once
 
 #include <stdint.h>
-#include <string.h>
 
 #include "../Configuration.hpp"
 #include "../Math/Fixed.hpp"
@@ -63,6 +62,7 @@
 #include "../Math/Scaler.hpp"
 #include "../Math/ScalarTraits.hpp"
 #include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
 #include "../Core/Handle.hpp"
 #include "../Core/Access.hpp"
 
@@ -75,20 +75,13 @@ struct MagnitudeOrder {
   static bool greater(S a, S b) { return a > b; }
 };
 // Non-negative floats (fabs() gives them) order as their bit patterns do as
-// unsigned integers, NaN above infinity: a compare of four bytes instead of
-// a call to the float compare (the bound then costs the survey a few
-// cycles per particle more than |vx| + |vy| did).
+// unsigned integers, NaN above infinity (floatBits(), Math/Zero.hpp): a
+// compare of four bytes instead of a call to the float compare (the bound
+// then costs the survey a few cycles per particle more than |vx| + |vy|
+// did).
 template <>
 struct MagnitudeOrder<Float> {
-  static bool greater(Float a, Float b) { return bitsOf(a) > bitsOf(b); }
-
- private:
-  static uint32_t bitsOf(Float x) {
-    const float f = x.toFloat();
-    uint32_t bits;
-    memcpy(&bits, &f, sizeof(bits));
-    return bits;
-  }
+  static bool greater(Float a, Float b) { return floatBits(a) > floatBits(b); }
 };
 
 // A bound on the speed |v| for the speed limit, without a square root: the
