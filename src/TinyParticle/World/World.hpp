@@ -879,7 +879,6 @@ class World
   const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
   void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
 
-
   // Empties a particle, force or constraint slot; its generation moves on,
   // so the handles to it become stale.
   template <class Slot>
@@ -1099,7 +1098,6 @@ class World
       wakeAll();
     }
   }
-
 };
 
 }  // namespace tinyparticle
