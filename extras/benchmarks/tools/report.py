@@ -277,6 +277,16 @@ def baseline_markdown(rows):
     return lines
 
 
+def write_points(tmp, name, rows, fmt):
+    """A gnuplot data file in tmp: one line per row, fmt % row. Returns its
+    path."""
+    path = os.path.join(tmp, name)
+    with open(path, "w") as f:
+        for row in rows:
+            f.write(fmt % row + "\n")
+    return path
+
+
 def timeline_plot(out_dir, tmp):
     """Cycles per step against time (means over each eighth of a second) for
     the 16 balls and the pile, from timeline.csv."""
@@ -290,10 +300,8 @@ def timeline_plot(out_dir, tmp):
                    if r["scene"] == scene and r["scalar"] == s]
             if not pts:
                 continue
-            data = os.path.join(tmp, "timeline-%s-%s.dat" % (scene, s))
-            with open(data, "w") as f:
-                for t, c in pts:
-                    f.write("%s %s\n" % (t, c))
+            data = write_points(tmp, "timeline-%s-%s.dat" % (scene, s), pts,
+                                "%s %s")
             series.append((scene, s, style, data))
     if not series:
         return None
@@ -324,10 +332,9 @@ def scenes_plot(rows, out_dir, tmp):
                      and dt_label(r["dt_ms"]) == "1/256" and num(r["cycles_per_step"]))
         if not pts:
             continue
-        data = os.path.join(tmp, "balls-%s.dat" % s)
-        with open(data, "w") as f:
-            for n, c, settled in pts:
-                f.write("%d %s %s\n" % (n, c, settled if settled else "NaN"))
+        data = write_points(tmp, "balls-%s.dat" % s,
+                            [(n, c, settled if settled else "NaN")
+                             for n, c, settled in pts], "%d %s %s")
         series.append((s, data))
     if not series:
         return None
@@ -451,10 +458,8 @@ def chains_plot(rows, out_dir, tmp):
                          and dt_label(r["dt_ms"]) == "1/256" and num(r["cycles_per_step"]))
             if not pts:
                 continue
-            data = os.path.join(tmp, "chain-%s-%s.dat" % (s, board))
-            with open(data, "w") as f:
-                for n, c in pts:
-                    f.write("%d %s\n" % (n, c))
+            data = write_points(tmp, "chain-%s-%s.dat" % (s, board), pts,
+                                "%d %s")
             series.append((s, board, data, pts))
     if not series:
         return None
@@ -496,10 +501,7 @@ def pendulum_plot(rows, out_dir, tmp):
         pts = sorted(found.items())
         if not pts:
             continue
-        data = os.path.join(tmp, "sweep-%s.dat" % s)
-        with open(data, "w") as f:
-            for rate, e in pts:
-                f.write("%.6g %s\n" % (rate, e))
+        data = write_points(tmp, "sweep-%s.dat" % s, pts, "%.6g %s")
         series.append((s, data))
     if not series:
         return None
@@ -655,11 +657,10 @@ def ops_plot(rows, out_dir, tmp):
         pts = [p for p in pts if p[0] and p[0] > 0 and p[1] and p[1] > 0]
         if not pts:
             continue
-        data = os.path.join(tmp, "ops-%s.dat" % t)
-        with open(data, "w") as f:
-            for c, e, o in pts:
-                # gnuplot's enhanced text would read "_" as a subscript
-                f.write("%s %s %s\n" % (c, e, o.replace("_", "-")))
+        # gnuplot's enhanced text would read "_" as a subscript
+        data = write_points(tmp, "ops-%s.dat" % t,
+                            [(c, e, o.replace("_", "-")) for c, e, o in pts],
+                            "%s %s %s")
         series.append((t, data))
     if not series:
         return None
