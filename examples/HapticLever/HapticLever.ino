@@ -218,8 +218,11 @@ RealTimeLoop timing(1024, kPlotter ? 50 : 5);
 // 24 x 12 characters of 2.5 x 5 cm: a line takes about 11,000 cycles.
 // The end (radius 1 cm) is smaller than half a cell: drawn as a point, the
 // same characters without the renderer's circle code.
-AsciiRenderer<HapticWorld, 24, 12, ParticleShape::kPoints> renderer(
-    S(-0.1), S(-0.3), S(0.025), S(0.05));
+// Its links are one rod: the force slots (gravity, the user's force) are
+// not looked at.
+AsciiRenderer<HapticWorld, 24, 12, ParticleShape::kPoints,
+              LinkShape::kRodsAndCables>
+    renderer(S(-0.1), S(-0.3), S(0.025), S(0.05));
 Servo leverServo;
 
 // ---- Analog inputs without waiting ---------------------------------------
@@ -326,29 +329,41 @@ bool serviceInputs() {
 const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
-inline S mirrored(S value, bool lower) {
-  return lower ? S::fromRaw(-value.raw()) : value;
-}
+// y and its velocity negated: the lower end becomes the upper one. (Out of
+// line: called twice; in a struct, where the IDE's generated prototypes,
+// which would name HapticWorld before its typedef, do not reach.)
+struct Mirror {
+  static TINYPARTICLE_NOINLINE void y(HapticWorld::ParticleType* p) {
+    p->position.y = S::fromRaw(-p->position.y.raw());
+    p->velocity.y = S::fromRaw(-p->velocity.y.raw());
+  }
+};
 
 void rangeEnds() {
-  Vec2<S>& x = leverEnd->position;
-  Vec2<S>& v = leverEnd->velocity;
-  const bool lower = x.y < S();
-  if (!(mirrored(x.y, lower) > stopY)) return;
-  x.x = stopX;
-  x.y = mirrored(stopY, lower);
-  const S out = kStopCos * mirrored(v.y, lower) - kStopSin * v.x;  // along t
-  if (!(out > S())) return;  // not moving out
-  S back = S();
-  if (out > kRestingSpeed) {
-    back = S::fromRaw(-((out.raw() + 1) >> 1));  // -out / 2, rounded as S
-    // The servo takes a new angle only every 20 ms: after a bounce it is
-    // kept at the range end for a little longer than that, or the
-    // prediction turns it back before the felt lever has reached the end.
-    stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
+  HapticWorld::ParticleType* const end = leverEnd;
+  const bool lower = end->position.y < S();
+  if (lower) Mirror::y(end);
+  Vec2<S>& x = end->position;
+  Vec2<S>& v = end->velocity;
+  if (x.y > stopY) {
+    x.x = stopX;
+    x.y = stopY;
+    const S out = kStopCos * v.y - kStopSin * v.x;  // along t
+    if (out > S()) {  // moving out
+      S back = S();
+      if (out > kRestingSpeed) {
+        back = S::fromRaw(-((out.raw() + 1) >> 1));  // -out / 2, rounded as S
+        // The servo takes a new angle only every 20 ms: after a bounce it
+        // is kept at the range end for a little longer than that, or the
+        // prediction turns it back before the felt lever has reached the
+        // end.
+        stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
+      }
+      v.x = negative(kStopSin) * back;
+      v.y = kStopCos * back;
+    }
   }
-  v.x = negative(kStopSin) * back;
-  v.y = mirrored(kStopCos * back, lower);
+  if (lower) Mirror::y(end);
 }
 
 // x / 2^k rounded down, as an arithmetic shift gives it, without shifting
@@ -378,8 +393,9 @@ void prepareStep() {
   if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
   const Vec2<S>& end = leverEnd->position;
   forceScale = felt * forcePerNewton;
-  userForce.x = -end.y * forceScale;
-  userForce.y = end.x * forceScale;
+  userForce.x = -end.y;
+  userForce.y = end.x;
+  userForce *= forceScale;
 }
 
 // The lever's angle from level, asin(y / L) of the end's height: within
