@@ -483,10 +483,11 @@ void watchServoPulse() {
 // and it leaves the UART between two pulses (see above). Without pulses
 // (none yet, or no servo attached) there is nothing to keep clear.
 bool serialQuiet(uint8_t n) {
-  if (Serial.availableForWrite() <= n) return false;
+  const int room = Serial.availableForWrite();
+  if (room <= n) return false;
   if (servoPinState & 1) return false;  // a pulse is on
   if (servoPinState == 0) return true;
-  int bytes = kTxQueueMax - Serial.availableForWrite() + n + 1;
+  int bytes = kTxQueueMax - room + n + 1;
   if (bytes < 0) bytes = 0;
   const uint16_t since = uint16_t(micros()) - pulseEndMicros;
   if (since > 2 * kServoFrameUs) {  // the pulses have stopped
@@ -497,6 +498,7 @@ bool serialQuiet(uint8_t n) {
 }
 
 // A value with two decimals (magnitudes up to 655.35).
+const uint16_t kPowersOfTen[] PROGMEM = {10000, 1000, 100, 10, 1};
 uint8_t appendHundredths(char* line, uint8_t n, S value) {
   uint32_t magnitude = uint32_t(value.raw());
   if (value < S()) {
@@ -504,17 +506,21 @@ uint8_t appendHundredths(char* line, uint8_t n, S value) {
     magnitude = 0UL - magnitude;
   }
   if (magnitude > 65535UL * 655) magnitude = 65535UL * 655;
-  // 16-bit digits are several times faster than 32-bit ones on the AVR.
   uint16_t h = uint16_t((magnitude * 100 + 0x8000UL) >> 16);
-  char digits[6];
-  uint8_t count = 0;
-  do {
-    digits[count++] = char('0' + h % 10);
-    h /= 10;
-  } while (h > 0 || count < 3);
-  while (count > 0) {
-    line[n++] = digits[--count];
-    if (count == 2) line[n++] = '.';
+  // Digits by subtracting powers of ten (16-bit: several times faster on
+  // the AVR than 32-bit digits, and no division linked); leading zeros
+  // are left out down to the units (0.05, not .05).
+  bool leading = true;
+  for (uint8_t i = 0; i < 5; ++i) {
+    const uint16_t power = pgm_read_word(&kPowersOfTen[i]);
+    char digit = '0';
+    while (h >= power) {
+      h -= power;
+      ++digit;
+    }
+    if (digit != '0' || i == 2) leading = false;
+    if (!leading) line[n++] = digit;
+    if (i == 2) line[n++] = '.';
   }
   return n;
 }
