@@ -555,9 +555,11 @@ void setup() {
   // The push starts from the sensors as they are (a hand may already be on
   // the lever), not from zero: a push from nothing would kick the weight.
   AnalogInput::begin();
-  downNewtons = fsrNewtons(readAnalogNow(kFsrDownPin));
-  upNewtons = fsrNewtons(readAnalogNow(kFsrUpPin));
-  push = downNewtons - upNewtons;
+  const S down = fsrNewtons(readAnalogNow(kFsrDownPin));
+  const S up = fsrNewtons(readAnalogNow(kFsrUpPin));
+  downNewtons = down;
+  upNewtons = up;
+  push = down - up;
   leverServo.attach(kServoPin, kServoMinUs, kServoMaxUs);
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
