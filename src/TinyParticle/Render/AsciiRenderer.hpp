@@ -112,20 +112,18 @@ class AsciiRenderer {
       out.write(uint8_t('['));
       out.write(uint8_t('H'));
     }
-    // A border line is a row of '-' between '+'. The row goes between its
-    // two sides, and one loop writes all three.
+    // A border line is a row of '-' between '+': one loop writes both.
     const bool edge = mBorder && (mLine == 0 || mLine == total - 1);
-    char line[kColumns + 2];
-    char* const text = line + 1;
+    char text[kColumns];
     if (edge) {
       for (uint8_t c = 0; c < kColumns; ++c) text[c] = '-';
     } else {
       renderRow(world, uint8_t(mLine - first), text);
     }
-    line[0] = line[kColumns + 1] = edge ? '+' : '|';
-    for (uint8_t c = 1 - first; c < kColumns + 1 + first; ++c) {
-      out.write(uint8_t(line[c]));
-    }
+    const uint8_t side = edge ? '+' : '|';
+    if (mBorder) out.write(side);
+    for (uint8_t c = 0; c < kColumns; ++c) out.write(uint8_t(text[c]));
+    if (mBorder) out.write(side);
     out.write(uint8_t('\n'));
     ++mLine;
     const bool done = mLine >= total;
