@@ -181,10 +181,11 @@ class AsciiRenderer {
                                              bool isLength) {
     return clampUnits(((isLength ? v : v - axis.origin) * axis.scale).toInt());
   }
-  // A position's x and y into out[0] and out[1]; axes: mX (mY follows it).
-  static TINYPARTICLE_NOINLINE void pointUnits(const V& p, const Axis* axes,
-                                               Units* out) {
-    for (uint8_t i = 0; i < 2; ++i) out[i] = toUnits(p[i], axes[i], false);
+  // A position's x and y into out[0] and out[1].
+  static TINYPARTICLE_NOINLINE void pointUnits(const V& p, const Axis& x,
+                                               const Axis& y, Units* out) {
+    out[0] = toUnits(p.x, x, false);
+    out[1] = toUnits(p.y, y, false);
   }
 
   // kSub / cell (sub-cell units per metre), rounded as the scalar's own
@@ -266,7 +267,7 @@ class AsciiRenderer {
   void drawParticle(const typename W::ParticleType& p, Units low,
                     char* text) const {
     Units point[2];
-    pointUnits(p.position, &mX, point);
+    pointUnits(p.position, mX, mY, point);
     const Units x = point[0], y = point[1];
     const Units rx = toUnits(p.radius, mX, true);
     // (Points need no height: the call is not made for them.)
@@ -333,8 +334,8 @@ class AsciiRenderer {
                 char* text) const {
     // The ends as {x, y} in sub-cell units.
     Units a[2], b[2];
-    pointUnits(pa, &mX, a);
-    pointUnits(pb, &mX, b);
+    pointUnits(pa, mX, mY, a);
+    pointUnits(pb, mX, mY, b);
     const bool aLower = a[1] <= b[1];
     const Units* lower = aLower ? a : b;
     const Units* upper = aLower ? b : a;
