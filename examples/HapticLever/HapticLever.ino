@@ -215,7 +215,8 @@ Vec2<S> userForce;  // N, read by the custom force generator every step
 // 1,024 steps a second: timing is the one place that sets the step.
 RealTimeLoop timing(1024, kPlotter ? 50 : 5);
 // The lever's end reaches 0.48 m: x from -0.1 to 0.5 m, y from -0.3 m up.
-// 24 x 12 characters of 2.5 x 5 cm: a line takes about 11,000 cycles.
+// 24 x 12 characters of 2.5 x 5 cm, one line per pass of loop() (the
+// cycles of the passes: extras/hil, "5 loop").
 // The end (radius 1 cm) is smaller than half a cell: drawn as a point, the
 // same characters without the renderer's circle code.
 // Its links are one rod: the force slots (gravity, the user's force) are
