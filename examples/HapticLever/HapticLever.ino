@@ -308,10 +308,8 @@ bool serviceInputs() {
   const int reading = AnalogInput::value();
   ++inputTurn;
   AnalogInput::start(inputPin());
-  if (pin == kFsrDownPin) {
-    downNewtons = fsrNewtons(reading);
-  } else if (pin == kFsrUpPin) {
-    upNewtons = fsrNewtons(reading);
+  if (pin != kLengthDialPin) {
+    (pin == kFsrDownPin ? downNewtons : upNewtons) = fsrNewtons(reading);
   } else if (reading > dialReading + 3 || reading < dialReading - 3) {
     setLeverLength(reading);  // a few steps of hysteresis against jitter
   }
@@ -466,12 +464,25 @@ const uint16_t kQuietUs =
 uint16_t pulseEndMicros;   // micros() when the last pulse was seen ending
 uint8_t servoPinState = 0; // bit 0: a pulse is on; bit 1: one has ended
 
+// The servo pin's level, as digitalRead() reads it (without its check for
+// a PWM timer, which the servo pin does not use). On the ATmega328P from
+// its pin map (digital 0-7: port D, 8-13: port B) at compile time, without
+// the core's lookup tables; elsewhere through them.
+#if defined(__AVR_ATmega328P__)
+static_assert(kServoPin <= 13, "a digital pin of the Nano");
+inline bool servoPinHigh() {
+  return kServoPin < 8 ? (PIND & _BV(kServoPin & 7)) != 0
+                       : (PINB & _BV((kServoPin - 8) & 7)) != 0;
+}
+#else
+inline bool servoPinHigh() {
+  return (*portInputRegister(digitalPinToPort(kServoPin)) &
+          digitalPinToBitMask(kServoPin)) != 0;
+}
+#endif
+
 void watchServoPulse() {
-  // The pin's input register, as digitalRead() reads it (without its
-  // check for a PWM timer, which the servo pin does not use).
-  const bool high = *portInputRegister(digitalPinToPort(kServoPin)) &
-                    digitalPinToBitMask(kServoPin);
-  if (high) {
+  if (servoPinHigh()) {
     servoPinState |= 1;
   } else if (servoPinState & 1) {
     pulseEndMicros = uint16_t(micros());
