@@ -24,8 +24,8 @@
 // not looked at, and the line code (about 400 bytes on the Nano) is not
 // linked. One whose links are all rods or cables (no springs) passes
 // LinkShape::kRodsAndCables: the force slots are then not looked at (about
-// 240 bytes less in examples/HapticLever). (A world's type cannot tell: any force or constraint
-// slot may hold a spring or a rod at run time.)
+// 240 bytes less in examples/HapticLever). (A world's type cannot tell:
+// any force or constraint slot may hold a spring or a rod at run time.)
 //
 // Draw a whole frame with draw(), or one line per call with drawLine() so
 // that a sketch never waits for a slow serial line (check that the output
