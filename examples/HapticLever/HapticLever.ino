@@ -328,13 +328,17 @@ bool serviceInputs() {
 const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
-// y and its velocity negated: the lower end becomes the upper one. (Out of
-// line: called twice; in a struct, where the IDE's generated prototypes,
-// which would name HapticWorld before its typedef, do not reach.)
+// y and its velocity negated: the lower end becomes the upper one. (One
+// negation out of line, called four times; in a struct, where the IDE's
+// generated prototypes, which would name HapticWorld before its typedef,
+// do not reach.)
 struct Mirror {
-  static TINYPARTICLE_NOINLINE void y(HapticWorld::ParticleType* p) {
-    p->position.y = S::fromRaw(-p->position.y.raw());
-    p->velocity.y = S::fromRaw(-p->velocity.y.raw());
+  static TINYPARTICLE_NOINLINE void negate(S& value) {
+    value = S::fromRaw(-value.raw());
+  }
+  static void y(HapticWorld::ParticleType* p) {
+    negate(p->position.y);
+    negate(p->velocity.y);
   }
 };
 
