@@ -314,14 +314,16 @@ class AsciiRenderer {
 
   // x of the segment from `lower` to `upper` (each {x, y}, the first no
   // higher than the second) at height y, between its ends' heights: out of
-  // line, its two 32-bit products and division once in flash.
+  // line, its 32-bit product and division once in flash.
   static TINYPARTICLE_NOINLINE Units xAtHeight(const Units* lower,
                                                const Units* upper, Units y) {
     if (y <= lower[1]) return lower[0];
     if (y >= upper[1]) return upper[0];
-    // Strictly between the ends: rise and up are positive. In magnitudes,
-    // with the unsigned 16 x 16-bit multiply and 32-bit divide that other
-    // code links anyway (the quotient truncated as a signed one would be).
+    // Strictly between the ends: rise and up are positive, and all the
+    // differences fit 16 bits (the ends are within +-kLimit). In
+    // magnitudes, with the unsigned 16 x 16-bit multiply and 32-bit divide
+    // that other code links anyway (the quotient truncated as a signed one
+    // would be); the result lies between the ends' x.
     const int16_t across = int16_t(upper[0] - lower[0]);
     const uint16_t rise = uint16_t(y - lower[1]);
     const uint16_t up = uint16_t(upper[1] - lower[1]);
