@@ -215,11 +215,15 @@ Vec2<S> userForce;  // N, read by the custom force generator every step
 // 1,024 steps a second: timing is the one place that sets the step.
 RealTimeLoop timing(1024, kPlotter ? 50 : 5);
 // The lever's end reaches 0.48 m: x from -0.1 to 0.5 m, y from -0.3 m up.
-// 24 x 12 characters of 2.5 x 5 cm: a line takes about 11,000 cycles.
+// 24 x 12 characters of 2.5 x 5 cm, one line per pass of loop() (the
+// cycles of the passes: extras/hil, "5 loop").
 // The end (radius 1 cm) is smaller than half a cell: drawn as a point, the
 // same characters without the renderer's circle code.
-AsciiRenderer<HapticWorld, 24, 12, ParticleShape::kPoints> renderer(
-    S(-0.1), S(-0.3), S(0.025), S(0.05));
+// Its links are one rod: the force slots (gravity, the user's force) are
+// not looked at.
+AsciiRenderer<HapticWorld, 24, 12, ParticleShape::kPoints,
+              LinkShape::kRodsAndCables>
+    renderer(S(-0.1), S(-0.3), S(0.025), S(0.05));
 Servo leverServo;
 
 // ---- Analog inputs without waiting ---------------------------------------
@@ -304,10 +308,8 @@ bool serviceInputs() {
   const int reading = AnalogInput::value();
   ++inputTurn;
   AnalogInput::start(inputPin());
-  if (pin == kFsrDownPin) {
-    downNewtons = fsrNewtons(reading);
-  } else if (pin == kFsrUpPin) {
-    upNewtons = fsrNewtons(reading);
+  if (pin != kLengthDialPin) {
+    (pin == kFsrDownPin ? downNewtons : upNewtons) = fsrNewtons(reading);
   } else if (reading > dialReading + 3 || reading < dialReading - 3) {
     setLeverLength(reading);  // a few steps of hysteresis against jitter
   }
@@ -326,29 +328,45 @@ bool serviceInputs() {
 const int8_t kStopHoldSteps = 24;
 int8_t stopHold = 0;  // steps left, - at the lower end, + at the upper
 
-inline S mirrored(S value, bool lower) {
-  return lower ? S::fromRaw(-value.raw()) : value;
-}
+// y and its velocity negated: the lower end becomes the upper one. (One
+// negation out of line, called four times; in a struct, where the IDE's
+// generated prototypes, which would name HapticWorld before its typedef,
+// do not reach.)
+struct Mirror {
+  static TINYPARTICLE_NOINLINE void negate(S& value) {
+    value = S::fromRaw(-value.raw());
+  }
+  static void y(HapticWorld::ParticleType* p) {
+    negate(p->position.y);
+    negate(p->velocity.y);
+  }
+};
 
 void rangeEnds() {
-  Vec2<S>& x = leverEnd->position;
-  Vec2<S>& v = leverEnd->velocity;
-  const bool lower = x.y < S();
-  if (!(mirrored(x.y, lower) > stopY)) return;
-  x.x = stopX;
-  x.y = mirrored(stopY, lower);
-  const S out = kStopCos * mirrored(v.y, lower) - kStopSin * v.x;  // along t
-  if (!(out > S())) return;  // not moving out
-  S back = S();
-  if (out > kRestingSpeed) {
-    back = S::fromRaw(-((out.raw() + 1) >> 1));  // -out / 2, rounded as S
-    // The servo takes a new angle only every 20 ms: after a bounce it is
-    // kept at the range end for a little longer than that, or the
-    // prediction turns it back before the felt lever has reached the end.
-    stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
+  HapticWorld::ParticleType* const end = leverEnd;
+  const bool lower = end->position.y < S();
+  if (lower) Mirror::y(end);
+  Vec2<S>& x = end->position;
+  Vec2<S>& v = end->velocity;
+  if (x.y > stopY) {
+    x.x = stopX;
+    x.y = stopY;
+    const S out = kStopCos * v.y - kStopSin * v.x;  // along t
+    if (out > S()) {  // moving out
+      S back = S();
+      if (out > kRestingSpeed) {
+        back = S::fromRaw(-((out.raw() + 1) >> 1));  // -out / 2, rounded as S
+        // The servo takes a new angle only every 20 ms: after a bounce it
+        // is kept at the range end for a little longer than that, or the
+        // prediction turns it back before the felt lever has reached the
+        // end.
+        stopHold = lower ? -kStopHoldSteps : kStopHoldSteps;
+      }
+      v.x = negative(kStopSin) * back;
+      v.y = kStopCos * back;
+    }
   }
-  v.x = negative(kStopSin) * back;
-  v.y = mirrored(kStopCos * back, lower);
+  if (lower) Mirror::y(end);
 }
 
 // x / 2^k rounded down, as an arithmetic shift gives it, without shifting
@@ -378,8 +396,9 @@ void prepareStep() {
   if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
   const Vec2<S>& end = leverEnd->position;
   forceScale = felt * forcePerNewton;
-  userForce.x = -end.y * forceScale;
-  userForce.y = end.x * forceScale;
+  userForce.x = -end.y;
+  userForce.y = end.x;
+  userForce *= forceScale;
 }
 
 // The lever's angle from level, asin(y / L) of the end's height: within
@@ -449,12 +468,25 @@ const uint16_t kQuietUs =
 uint16_t pulseEndMicros;   // micros() when the last pulse was seen ending
 uint8_t servoPinState = 0; // bit 0: a pulse is on; bit 1: one has ended
 
+// The servo pin's level, as digitalRead() reads it (without its check for
+// a PWM timer, which the servo pin does not use). On the ATmega328P from
+// its pin map (digital 0-7: port D, 8-13: port B) at compile time, without
+// the core's lookup tables; elsewhere through them.
+#if defined(__AVR_ATmega328P__)
+static_assert(kServoPin <= 13, "a digital pin of the Nano");
+inline bool servoPinHigh() {
+  return kServoPin < 8 ? (PIND & _BV(kServoPin & 7)) != 0
+                       : (PINB & _BV((kServoPin - 8) & 7)) != 0;
+}
+#else
+inline bool servoPinHigh() {
+  return (*portInputRegister(digitalPinToPort(kServoPin)) &
+          digitalPinToBitMask(kServoPin)) != 0;
+}
+#endif
+
 void watchServoPulse() {
-  // The pin's input register, as digitalRead() reads it (without its
-  // check for a PWM timer, which the servo pin does not use).
-  const bool high = *portInputRegister(digitalPinToPort(kServoPin)) &
-                    digitalPinToBitMask(kServoPin);
-  if (high) {
+  if (servoPinHigh()) {
     servoPinState |= 1;
   } else if (servoPinState & 1) {
     pulseEndMicros = uint16_t(micros());
@@ -467,10 +499,11 @@ void watchServoPulse() {
 // and it leaves the UART between two pulses (see above). Without pulses
 // (none yet, or no servo attached) there is nothing to keep clear.
 bool serialQuiet(uint8_t n) {
-  if (Serial.availableForWrite() <= n) return false;
+  const int room = Serial.availableForWrite();
+  if (room <= n) return false;
   if (servoPinState & 1) return false;  // a pulse is on
   if (servoPinState == 0) return true;
-  int bytes = kTxQueueMax - Serial.availableForWrite() + n + 1;
+  int bytes = kTxQueueMax - room + n + 1;
   if (bytes < 0) bytes = 0;
   const uint16_t since = uint16_t(micros()) - pulseEndMicros;
   if (since > 2 * kServoFrameUs) {  // the pulses have stopped
@@ -481,6 +514,7 @@ bool serialQuiet(uint8_t n) {
 }
 
 // A value with two decimals (magnitudes up to 655.35).
+const uint16_t kPowersOfTen[] PROGMEM = {10000, 1000, 100, 10, 1};
 uint8_t appendHundredths(char* line, uint8_t n, S value) {
   uint32_t magnitude = uint32_t(value.raw());
   if (value < S()) {
@@ -488,17 +522,21 @@ uint8_t appendHundredths(char* line, uint8_t n, S value) {
     magnitude = 0UL - magnitude;
   }
   if (magnitude > 65535UL * 655) magnitude = 65535UL * 655;
-  // 16-bit digits are several times faster than 32-bit ones on the AVR.
   uint16_t h = uint16_t((magnitude * 100 + 0x8000UL) >> 16);
-  char digits[6];
-  uint8_t count = 0;
-  do {
-    digits[count++] = char('0' + h % 10);
-    h /= 10;
-  } while (h > 0 || count < 3);
-  while (count > 0) {
-    line[n++] = digits[--count];
-    if (count == 2) line[n++] = '.';
+  // Digits by subtracting powers of ten (16-bit: several times faster on
+  // the AVR than 32-bit digits, and no division linked); leading zeros
+  // are left out down to the units (0.05, not .05).
+  bool leading = true;
+  for (uint8_t i = 0; i < 5; ++i) {
+    const uint16_t power = pgm_read_word(&kPowersOfTen[i]);
+    char digit = '0';
+    while (h >= power) {
+      h -= power;
+      ++digit;
+    }
+    if (digit != '0' || i == 2) leading = false;
+    if (!leading) line[n++] = digit;
+    if (i == 2) line[n++] = '.';
   }
   return n;
 }
@@ -533,9 +571,11 @@ void setup() {
   // The push starts from the sensors as they are (a hand may already be on
   // the lever), not from zero: a push from nothing would kick the weight.
   AnalogInput::begin();
-  downNewtons = fsrNewtons(readAnalogNow(kFsrDownPin));
-  upNewtons = fsrNewtons(readAnalogNow(kFsrUpPin));
-  push = downNewtons - upNewtons;
+  const S down = fsrNewtons(readAnalogNow(kFsrDownPin));
+  const S up = fsrNewtons(readAnalogNow(kFsrUpPin));
+  downNewtons = down;
+  upNewtons = up;
+  push = down - up;
   leverServo.attach(kServoPin, kServoMinUs, kServoMaxUs);
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);

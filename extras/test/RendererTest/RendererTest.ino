@@ -69,11 +69,14 @@ struct Checks {
 
   // A whole frame with a border, line by line: returns how many calls
   // returned false before the one that returned true.
-  static uint8_t frame(Capture& capture) {
+  static uint8_t frame(Capture& capture, bool border = true,
+                       bool home = false) {
     W w;
     V where(1.05, 1.1);
     w.addParticle(where, S(1));
     R renderer(S(0), S(0), S(0.1), S(0.2));
+    renderer.setBorder(border);
+    renderer.setHome(home);
     uint8_t calls = 0;
     while (!renderer.drawLine(w, capture) && calls < 50) ++calls;
     return calls;
@@ -192,6 +195,21 @@ test(FrameByLines) {
   assertEqual(capture.text[21], '+');
   assertEqual(capture.text[23], '|');
   assertEqual(capture.text[23 + 4 * 23 + 1 + 10], 'o');  // row 4, column 10
+}
+
+// Without the border and with the cursor-home code: the code, then 10
+// rows of 20 characters and a newline each; the 10th call completes it.
+test(FrameWithoutBorderWithHome) {
+  Capture capture;
+  assertEqual((int) Checks<Q16_16>::frame(capture, false, true), 9);
+  assertEqual((int) capture.lines, 10);
+  assertEqual((int) capture.length, 3 + 10 * 21);
+  assertEqual(capture.text[0], '\x1b');
+  assertEqual(capture.text[1], '[');
+  assertEqual(capture.text[2], 'H');
+  assertEqual(capture.text[3], ' ');
+  assertEqual(capture.text[3 + 20], '\n');
+  assertEqual(capture.text[3 + 4 * 21 + 10], 'o');  // row 4, column 10
 }
 
 void setup() {

@@ -22,8 +22,10 @@
 // A sketch that never draws a link (no spring, rod or cable in its world)
 // passes LinkShape::kNone as the fifth template argument: the slots are then
 // not looked at, and the line code (about 400 bytes on the Nano) is not
-// linked. (A world's type cannot tell: any force or constraint slot may hold
-// a spring or a rod at run time.)
+// linked. One whose links are all rods or cables (no springs) passes
+// LinkShape::kRodsAndCables: the force slots are then not looked at (about
+// 240 bytes less in examples/HapticLever). (A world's type cannot tell:
+// any force or constraint slot may hold a spring or a rod at run time.)
 //
 // Draw a whole frame with draw(), or one line per call with drawLine() so
 // that a sketch never waits for a slow serial line (check that the output
@@ -53,8 +55,10 @@ enum : uint8_t {
 // argument).
 namespace LinkShape {
 enum : uint8_t {
-  kLines = 0,  // a line of '.' from end to end
-  kNone = 1,   // not drawn, and no code for them linked
+  kLines = 0,          // a line of '.' from end to end
+  kNone = 1,           // not drawn, and no code for them linked
+  kRodsAndCables = 2,  // rods and cables as kLines; springs not drawn, and
+                       // no code for the force slots linked
 };
 }
 
@@ -140,6 +144,8 @@ class AsciiRenderer {
       for (uint8_t i = 0; i < W::kForceCapacity; ++i) {
         drawSlot(world, WorldAccess::force(world, i), low, high, text);
       }
+    }
+    if (kLinkShape != LinkShape::kNone) {
       for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
         drawSlot(world, WorldAccess::constraint(world, i), low, high, text);
       }
@@ -175,8 +181,12 @@ class AsciiRenderer {
                                              bool isLength) {
     return clampUnits(((isLength ? v : v - axis.origin) * axis.scale).toInt());
   }
-  Units toUnitsX(S x) const { return toUnits(x, mX, false); }
-  Units toUnitsY(S y) const { return toUnits(y, mY, false); }
+  // A position's x and y into out[0] and out[1].
+  static TINYPARTICLE_NOINLINE void pointUnits(const V& p, const Axis& x,
+                                               const Axis& y, Units* out) {
+    out[0] = toUnits(p.x, x, false);
+    out[1] = toUnits(p.y, y, false);
+  }
 
   // kSub / cell (sub-cell units per metre), rounded as the scalar's own
   // division rounds it, in a constant expression.
@@ -227,10 +237,12 @@ class AsciiRenderer {
     }
   }
 
-  // floor(v / kSub) for negative v too, without shifting a negative value.
-  static TINYPARTICLE_NOINLINE Units cellOf(Units v) {
-    return v >= 0 ? Units(uint16_t(v) / kSub)
-                  : Units(-Units((uint16_t(-v) + kSub - 1) / kSub));
+  // floor(v / kSub) for negative v too, without shifting a negative value:
+  // v + 32768 (the sign bit flipped) is never negative, and 32768 / kSub
+  // is whole.
+  static Units cellOf(Units v) {
+    static_assert(32768 % kSub == 0, "kSub divides 2^15");
+    return Units(Units((uint16_t(v) ^ 0x8000u) / kSub) - 32768 / kSub);
   }
 
   // round(sqrt(n)) is not needed: floor is enough for a character grid.
@@ -254,8 +266,9 @@ class AsciiRenderer {
 
   void drawParticle(const typename W::ParticleType& p, Units low,
                     char* text) const {
-    const Units x = toUnitsX(p.position.x);
-    const Units y = toUnitsY(p.position.y);
+    Units point[2];
+    pointUnits(p.position, mX, mY, point);
+    const Units x = point[0], y = point[1];
     const Units rx = toUnits(p.radius, mX, true);
     // (Points need no height: the call is not made for them.)
     const Units ry = kParticleShape == ParticleShape::kCircles
@@ -299,30 +312,42 @@ class AsciiRenderer {
              text);
   }
 
-  // x of the segment (x0, y0)-(x1, y1) at height y (y0 < y1), out of line:
-  // its two 32-bit products and division once in flash.
-  static TINYPARTICLE_NOINLINE Units xAtHeight(Units x0, Units y0, Units x1,
-                                               Units y1, Units y) {
-    const int32_t across = x1 - x0, up = y1 - y0;
-    return Units(x0 + (y - y0) * across / up);
+  // x of the segment from `lower` to `upper` (each {x, y}, the first no
+  // higher than the second) at height y, between its ends' heights: out of
+  // line, its 32-bit product and division once in flash.
+  static TINYPARTICLE_NOINLINE Units xAtHeight(const Units* lower,
+                                               const Units* upper, Units y) {
+    if (y <= lower[1]) return lower[0];
+    if (y >= upper[1]) return upper[0];
+    // Strictly between the ends: rise and up are positive, and all the
+    // differences fit 16 bits (the ends are within +-kLimit). In
+    // magnitudes, with the unsigned 16 x 16-bit multiply and 32-bit divide
+    // that other code links anyway (the quotient truncated as a signed one
+    // would be); the result lies between the ends' x.
+    const int16_t across = int16_t(upper[0] - lower[0]);
+    const uint16_t rise = uint16_t(y - lower[1]);
+    const uint16_t up = uint16_t(upper[1] - lower[1]);
+    const uint16_t width = across < 0 ? uint16_t(-across) : uint16_t(across);
+    const Units shift = Units(uint32_t(rise) * width / up);
+    return Units(across < 0 ? lower[0] - shift : lower[0] + shift);
   }
 
   void drawLink(const V& pa, const V& pb, Units low, Units high,
                 char* text) const {
-    Units x0 = toUnitsX(pa.x), y0 = toUnitsY(pa.y);
-    Units x1 = toUnitsX(pb.x), y1 = toUnitsY(pb.y);
-    if (y0 > y1) {  // y0 <= y1 from here on
-      Units t = x0; x0 = x1; x1 = t;
-      t = y0; y0 = y1; y1 = t;
-    }
-    if (y1 < low || y0 >= high) return;
-    Units xa = x0, xb = x1;
-    if (y1 != y0) {
-      // x where the segment enters and leaves the band.
-      const Units ya = y0 > low ? y0 : low;
-      const Units yb = y1 < high - 1 ? y1 : Units(high - 1);
-      xa = xAtHeight(x0, y0, x1, y1, ya);
-      xb = xAtHeight(x0, y0, x1, y1, yb);
+    // The ends as {x, y} in sub-cell units.
+    Units a[2], b[2];
+    pointUnits(pa, mX, mY, a);
+    pointUnits(pb, mX, mY, b);
+    const bool aLower = a[1] <= b[1];
+    const Units* lower = aLower ? a : b;
+    const Units* upper = aLower ? b : a;
+    if (upper[1] < low || lower[1] >= high) return;
+    // x where the segment enters and leaves the band (a level one: its
+    // ends).
+    Units xa = lower[0], xb = upper[0];
+    if (lower[1] != upper[1]) {
+      xa = xAtHeight(lower, upper, low);
+      xb = xAtHeight(lower, upper, Units(high - 1));
     }
     if (xa > xb) {
       const Units t = xa; xa = xb; xb = t;
