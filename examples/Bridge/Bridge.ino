@@ -24,8 +24,11 @@ typedef World<Q16_16, 2, kLinks + 3, 1, kLinks + 2, 16> BridgeWorld;
 typedef Vec2<Q16_16> Point;
 BridgeWorld world;
 
-AsciiRenderer<BridgeWorld, 40, 16> renderer(Q16_16(0), Q16_16(0),
-                                            Q16_16(0.025), Q16_16(0.0625));
+// Rods and no spring: only rods and cables are drawn (no code for the
+// force slots linked).
+AsciiRenderer<BridgeWorld, 40, 16, ParticleShape::kCircles,
+              LinkShape::kRodsAndCables>
+    renderer(Q16_16(0), Q16_16(0), Q16_16(0.025), Q16_16(0.0625));
 RealTimeLoop timing(256, 8);
 
 void setup() {

@@ -27,7 +27,11 @@ typedef CradleWorld<S> World2;
 World2 world;
 
 // 36 x 14 characters over x from -0.2 to 1.2 m and y from 0.2 to 0.9 m.
-AsciiRenderer<World2, 36, 14> renderer(S(-0.2), S(0.2), S(0.04), S(0.05));
+// Rods and no spring: only rods and cables are drawn (no code for the
+// force slots linked).
+AsciiRenderer<World2, 36, 14, ParticleShape::kCircles,
+              LinkShape::kRodsAndCables>
+    renderer(S(-0.2), S(0.2), S(0.04), S(0.05));
 RealTimeLoop timing(256, 4);  // 256 steps per second, 4 frames per second
 
 const S kDt(1.0 / 256);

@@ -28,8 +28,11 @@ void setupPendulum() {
   world.addGravity();  // the world's gravity: the pivot is fixed, the bob falls
 }
 
-AsciiRenderer<World<S, 2, 2, 1, 1, 0>, 41, 12> renderer(S(-1.025), S(-1.1),
-                                                        S(0.05), S(0.1));
+// A rod and no spring: only rods and cables are drawn, and the renderer
+// links no code for the force slots.
+AsciiRenderer<World<S, 2, 2, 1, 1, 0>, 41, 12, ParticleShape::kCircles,
+              LinkShape::kRodsAndCables>
+    renderer(S(-1.025), S(-1.1), S(0.05), S(0.1));
 
 void setup() {
   Serial.begin(115200);

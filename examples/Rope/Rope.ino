@@ -32,8 +32,11 @@ ConstraintId links[kLinks];    // links[i] joins chain[i] and chain[i + 1]
 // 40 x 20 characters over 1 m x 1 m.
 // The beads (radius 1 cm) are smaller than half a cell: drawn as points,
 // the same characters without the renderer's circle code.
-AsciiRenderer<RopeWorld2, 40, 20, ParticleShape::kPoints> renderer(
-    S(0), S(0), S(0.025), S(0.05));
+// Its links are rods: only rods and cables are drawn (no code for the force
+// slots linked).
+AsciiRenderer<RopeWorld2, 40, 20, ParticleShape::kPoints,
+              LinkShape::kRodsAndCables>
+    renderer(S(0), S(0), S(0.025), S(0.05));
 RealTimeLoop timing(64, 8);  // dt = 1/64 s, 8 frames a second
 bool drawing = false;
 bool cut = false;
