@@ -16,8 +16,9 @@
 //  12  + particle-particle collisions
 //
 // Every parameter is read from a volatile (see the inputs below), and every
-// step's result is written to a volatile, so the compiler can neither fold the set-up nor drop
-// the step. The values make a small, well-behaved scene; only the cost matters.
+// step's result is written to a volatile, so the compiler can neither fold
+// the set-up nor drop the step. The values make a small, well-behaved
+// scene; only the cost matters.
 #pragma once
 
 #include "Scalar.h"
