@@ -520,20 +520,12 @@ class World
   // is not positive (0, negative, NaN) is refused: nothing moves, and
   // WorldError::kBadArgument is raised.
   void step(S dt) {
-    if (!detail::isPositive(dt)) {
-      mError |= WorldError::kBadArgument;
+    // dt, statics, forces: WorldCore's, shared by the world types of this
+    // S and Dim.
+    if (!Core::beginStep(&particleAt(0), kParticles, &forceAt(0), kForces,
+                         UniformStore::uniformPointer(), dt)) {
       return;
     }
-    TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
-    Core::markStatic(&particleAt(0), kParticles);
-    TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
-    UniformStore::clearUniform();
-    if (kForces != 0) {
-      Forces forces = {&particleAt(0), UniformStore::uniformPointer(),
-                       kParticles};
-      Core::runForces(&forceAt(0), kForces, forces, dt);
-    }
-    TINYPARTICLE_PROFILE_END(kProfileForces);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
     if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, dt)) {
       mContactCount = 0;
@@ -855,7 +847,8 @@ class World
   // (A world without particle slots says so at compile time, so that what
   // follows a successful check is seen to be dead code there.)
   bool check(ParticleId id) {
-    return isLive(id) || Core::staleParticle();
+    if (kParticles == 0) return Core::staleParticle();
+    return Core::checkParticle(&particleAt(0), kParticles, id);
   }
 
   // v += a dt (and, without rods, x += v dt) for every movable particle:
@@ -879,13 +872,10 @@ class World
   const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
   void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
 
-  // Empties a particle, force or constraint slot; its generation moves on,
-  // so the handles to it become stale.
+  // Empties a slot (WorldCore::freeSlot(): one copy per slot type).
   template <class Slot>
   static void freeSlot(Slot& slot) {
-    const uint8_t generation = uint8_t(slot.generation + 1);
-    slot = Slot();
-    slot.generation = generation;
+    Core::freeSlot(slot);
   }
 
   ConstraintSlot* newConstraint(ConstraintId& id, uint8_t a, uint8_t b,
@@ -917,12 +907,7 @@ class World
                   "this World has no force slot: World<S, Dim, particles, "
                   "forces, constraints, contacts> needs forces > 0 for "
                   "gravity, drag, springs, buoyancy and custom forces");
-    ForceId id;
-    ForceSlot* f = Core::newForce(&forceAt(0), kForces, id, a, b,
-                                  KindOf<G, typename ForceSlot::Params>::value,
-                                  apply);
-    if (f != nullptr) f->params.template as<G>() = generator;
-    return id;
+    return Core::placeForce(&forceAt(0), kForces, a, b, generator, apply);
   }
   // ... run for particle a by the ForceRunner (b: kNoIndex, or
   // kAnchorIndex for an anchorable class with its anchor).

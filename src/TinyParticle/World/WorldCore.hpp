@@ -19,6 +19,7 @@
 #include "../Core/Handle.hpp"
 #include "../Core/Particle.hpp"
 #include "../Debug/Debug.hpp"
+#include "../Debug/Profile.hpp"
 #include "../Math/Scaler.hpp"
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
@@ -62,6 +63,26 @@ class WorldCore {
     return ParticleId();
   }
 
+  // Whether a handle names a live particle of the pool; else kStaleHandle
+  // is raised (World::check()).
+  bool checkParticle(const ParticleType* slots, uint8_t count,
+                     ParticleId id) {
+    if (id.index < count) {
+      const ParticleType& p = slots[id.index];
+      if (p.inUse() && p.generation == id.generation) return true;
+    }
+    return staleParticle();
+  }
+
+  // Empties a particle, force or constraint slot; its generation moves on,
+  // so the handles to it become stale.
+  template <class Slot>
+  static void freeSlot(Slot& slot) {
+    const uint8_t generation = uint8_t(slot.generation + 1);
+    slot = Slot();
+    slot.generation = generation;
+  }
+
   // A handle that names no live particle (World::check()): kStaleHandle,
   // false.
   bool staleParticle() {
@@ -91,6 +112,43 @@ class WorldCore {
     mError |= WorldError::kForcesFull;
     TINYPARTICLE_DEBUG_PRINT("force pool full");
     return nullptr;
+  }
+
+  // Places a built-in force generator of class G (its parameters in the
+  // slot) with its runner; a and b as in the slot.
+  template <class G>
+  ForceId placeForce(CoreForceSlot* slots, uint8_t count, uint8_t a,
+                     uint8_t b, const G& generator,
+                     typename CoreForceSlot::Apply apply) {
+    ForceId id;
+    CoreForceSlot* f =
+        newForce(slots, count, id, a, b,
+                 KindOf<G, typename CoreForceSlot::Params>::value, apply);
+    if (f != nullptr) f->params.template as<G>() = generator;
+    return id;
+  }
+
+  // The step's first part: a dt that is not positive (0, negative, NaN) is
+  // refused (kBadArgument, false: nothing moves); else the statics are
+  // marked and the force generators run, from a cleared uniform
+  // acceleration (`uniform`: null in a world without forces).
+  bool beginStep(ParticleType* particles, uint8_t count,
+                 CoreForceSlot* forces, uint8_t forceCount, CoreVec* uniform,
+                 S dt) {
+    if (!detail::isPositive(dt)) {
+      mError |= WorldError::kBadArgument;
+      return false;
+    }
+    TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
+    markStatic(particles, count);
+    TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
+    if (forceCount != 0) {
+      *uniform = CoreVec();
+      ForceStep<S, Dim> step = {particles, uniform, count};
+      runForces(forces, forceCount, step, dt);
+    }
+    TINYPARTICLE_PROFILE_END(kProfileForces);
+    return true;
   }
 
   // The step's force generators, each once (they add to the particles'
