@@ -49,28 +49,122 @@
 
 namespace tinyparticle {
 
+// One lone rod's two solves, on its ends a and b (b null for an anchor).
+// A template over the scalar and dimension alone, out of line: every
+// World<S, Dim, ...> of a sketch shares one copy (issue 12). One path for
+// every rod: an immovable end (an anchor, or a particle of no inverse mass
+// at the start of the step) is an end of inverse mass 0, so that the rod of
+// a pendulum and a free dumbbell run the same code.
+template <typename S, uint8_t Dim, bool kAnchored>
+struct LoneRod {
+  typedef RodEquations<S, Dim> Eq;
+  typedef typename Eq::Pass Pass;
+  typedef typename Eq::Link Link;
+  typedef typename Eq::P P;
+  typedef typename Eq::V V;
+
+  // The position solve (SHAKE) of the rod between particles[a] and
+  // particles[b] (b kAnchorIndex: an anchor): the change of the ends'
+  // relative speed along u that brings the rod to its length at the end
+  // of the step, and the move that mends its length now, shared between
+  // the ends. (Through the chains' rightSide() it cost 400 cycles more.)
+  TINYPARTICLE_NOINLINE static void shake(P* particles, uint8_t a, uint8_t b,
+                                          Link& link, Pass& pass) {
+    const Ends ends(particles, a, b);
+    if (ends.isFixed()) return;
+    const V& u = link.direction;
+    S error;
+    bool turning;
+    const S speed =
+        Eq::positionSpeed(Eq::span(*ends.a, ends.b, link),
+                          ends.relativeVelocity(), u, link, pass, error,
+                          turning);
+    if (turning) pass.turned = true;
+    const S share = ends.shareOfA();
+    ends.pushApart(&P::velocity, u, speed, share);
+    if (!detail::isZero(error)) ends.pushApart(&P::position, u, error, share);
+  }
+
+  // The new direction, and the velocity solve (RATTLE): the ends'
+  // relative speed along u, r, is taken out as a change -r shared as
+  // above (a gets (-r) w, which is -(r w) to the bit, as a product rounds
+  // ties away from zero; b gets (-r) w - (-r) = r - r w; in fixed point all
+  // but r = S::lowest(), which -r saturates: a relative speed no step
+  // reaches). A rod with one movable end takes its speed along u.
+  TINYPARTICLE_NOINLINE static void rattle(P* particles, uint8_t a, uint8_t b,
+                                           Link& link, bool unit) {
+    const Ends ends(particles, a, b);
+    if (ends.isFixed()) return;
+    Eq::setDirection(Eq::span(*ends.a, ends.b, link), link, unit);
+    const V& u = link.direction;
+    const S radial = detail::dotOutOfLine(ends.relativeVelocity(), u);
+    ends.pushApart(&P::velocity, u, -radial, ends.shareOfA());
+  }
+
+ private:
+  // A rod's ends (b null for an anchor), and those that move (null where
+  // the end is immovable).
+  struct Ends {
+    TINYPARTICLE_ALWAYS_INLINE Ends(P* particles, uint8_t ia, uint8_t ib)
+        : a(&particles[ia]),
+          b(kAnchored || ib == kAnchorIndex ? nullptr : &particles[ib]),
+          movingA(a->isStatic() ? nullptr : a),
+          movingB(b == nullptr || b->isStatic() ? nullptr : b) {}
+    P* a;
+    P* b;
+    P* movingA;
+    P* movingB;
+
+    bool bMoves() const { return !kAnchored && movingB != nullptr; }
+    bool isFixed() const { return movingA == nullptr && !bMoves(); }
+    // va - vb, an immovable end at rest.
+    TINYPARTICLE_ALWAYS_INLINE V relativeVelocity() const {
+      V w;
+      if (movingA != nullptr) w = movingA->velocity;
+      if (bMoves()) w -= movingB->velocity;
+      return w;
+    }
+    // The part of a change of the ends' relative speed that a takes when
+    // both move: its inverse mass over both ends'. Through the compact
+    // reciprocal (rounded twice: a unit at most), so that a world whose
+    // step never divides elsewhere links no fast divide.
+    S shareOfA() const {
+      if (movingA == nullptr || !bMoves()) return S();
+      return a->inverseMass *
+             detail::compactReciprocalOfPositive(a->inverseMass +
+                                                 b->inverseMass);
+    }
+    // A change `amount` of the ends' relative (field: velocity or
+    // position) along u: all of it to the one movable end, or `share` of
+    // it to a and the rest against u to b.
+    void pushApart(V P::*field, const V& u, S amount, S share) const {
+      S toA = amount;
+      if (bMoves()) {
+        toA = movingA == nullptr ? S() : amount * share;
+        (movingB->*field).addScaled(u, toA - amount);
+      }
+      if (movingA != nullptr) (movingA->*field).addScaled(u, toA);
+    }
+  };
+};
+
 template <class W>
 struct LoneRods {
   typedef typename W::Scalar S;
-  typedef typename W::Vec V;
-  typedef typename W::ParticleType P;
   typedef typename W::ConstraintSlot Slot;
   typedef RodSolver<W> Rods;
-  typedef typename Rods::Pass Pass;
+  typedef typename RodEquations<S, W::kDimensions>::Pass Pass;
 
   // The world's rod solve when its rods never share a particle (see the
-  // top of this file). kTwoMovable: a rod may have two movable ends (a
-  // rod between particles); without, every rod hangs from an anchor
-  // (World::anchoredRodAdded() sets this solve only then), and neither the
-  // code for two movable ends nor that for a rod between particles is
-  // linked.
-  template <bool kTwoMovable>
+  // top of this file): World::rodAdded() and anchoredRodAdded() set it.
+  // kAnchored: every rod hangs from an anchor (b), and the code for rods
+  // between particles is not linked.
+  template <bool kAnchored>
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (WorldAccess::rodState(world) & W::kRodsChanged) {
       WorldAccess::setRodState(world, W::kRodsLone);
     }
-    solveAll<kTwoMovable, !kTwoMovable>(world, byDt,
-                                        WorldAccess::inverseDt(world, dt));
+    solveAll<kAnchored>(world, byDt, WorldAccess::inverseDt(world, dt));
   }
 
   // Whether rod slot `rod` may join a world solved here: its particle a is
@@ -93,16 +187,18 @@ struct LoneRods {
   }
 
   // Both solves for rods that share no particle: positions (SHAKE), the
-  // move, directions and velocities (RATTLE). kAnchored: every rod hangs
-  // from an anchor (b), and a is its moving end unless it is immovable.
-  template <bool kTwoMovable, bool kAnchored = false>
+  // move, directions and velocities (RATTLE). The world's part is only
+  // the walk over its slots: the solves are LoneRod's, shared.
+  template <bool kAnchored = false>
   static void solveAll(W& world, const Scaler<S>& byDt, S invDt) {
+    typedef LoneRod<S, W::kDimensions, kAnchored> Rod;
     Pass pass(byDt, invDt);
     pass.unit = false;
+    typename W::ParticleType* particles = &WorldAccess::particle(world, 0);
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (Rods::isRodAt(world, i)) {
-        shake<kTwoMovable, kAnchored>(world, WorldAccess::constraint(world, i),
-                                      pass);
+        Slot& s = WorldAccess::constraint(world, i);
+        Rod::shake(particles, s.a, s.b, Rods::linkOf(s), pass);
       }
     }
     // After a fast turn, unit directions (see above).
@@ -110,143 +206,16 @@ struct LoneRods {
     WorldAccess::movePositions(world, byDt);
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (Rods::isRodAt(world, i)) {
-        rattle<kTwoMovable, kAnchored>(world, WorldAccess::constraint(world, i),
-                                       unit);
+        Slot& s = WorldAccess::constraint(world, i);
+        Rod::rattle(particles, s.a, s.b, Rods::linkOf(s), unit);
       }
     }
   }
 
  private:
   static bool isImmovable(W& world, uint8_t p) {
-    return p >= W::kParticleCapacity || world.particleAt(p).isStatic();
-  }
-
-  // The moving end of a rod with one immovable end; fromB when that is b
-  // (the rod's direction then points away from it). A rod on an anchor
-  // moves at a.
-  template <bool kAnchored>
-  static P& movingEnd(W& world, const Slot& s, bool& fromB) {
-    P& a = world.particleAt(s.a);
-    fromB = !kAnchored && a.isStatic();
-    return fromB ? world.particleAt(s.b) : a;
-  }
-
-  // The position solve of one rod: with one immovable end, the moving
-  // end's change of speed along u. (Through the chains' rightSide() it
-  // cost 400 cycles more.) With two movable ends, the same for their
-  // relative motion, shared between them (shareBoth()).
-  template <bool kTwoMovable, bool kAnchored>
-  static void shake(W& world, const Slot& s, Pass& pass) {
-    const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
-    if (moving == 0) return;
-    const bool both = kTwoMovable && moving == 2;
-    bool fromB;
-    P& end = movingEnd<kAnchored>(world, s, fromB);  // a when both move
-    const V& u = Rods::linkOf(s).direction;
-    const V d = Rods::span(world, s);  // from b to a: the same as rattle()'s
-    const V* w = &end.velocity;
-    V relative;
-    if (both) {
-      relative = end.velocity;
-      relative -= world.particleAt(s.b).velocity;
-      w = &relative;
-    } else if (fromB) {
-      // Seen from b, the rod is -d along -u. Every product of the solve
-      // then changes sign twice or not at all, except those with the
-      // velocity: negating it instead gives the same speed and error to
-      // the bit (a product rounds symmetrically), and the change along -u
-      // is minus that along u. (Two scalars negated here rather than two
-      // vectors through Vec's operator-: 128 B less where b may move.)
-      for (uint8_t i = 0; i < V::kDimensions; ++i) relative[i] = -end.velocity[i];
-      w = &relative;
-    }
-    S error;
-    bool turning;
-    S speed = Rods::positionSpeed(d, *w, u, Rods::linkOf(s), pass, error,
-                                  turning);
-    if (turning) pass.turned = true;
-    if (both) {
-      shareBoth(world, s, speed, error);
-      return;
-    }
-    if (fromB) {
-      speed = -speed;
-      error = -error;
-    }
-    end.velocity.addScaled(u, speed);
-    if (!detail::isZero(error)) end.position.addScaled(u, error);
-  }
-
-  // The new direction, and the velocity solve: no speed along the rod.
-  template <bool kTwoMovable, bool kAnchored>
-  static void rattle(W& world, Slot& s, bool unit) {
-    const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
-    if (moving == 0) return;
-    Rods::setDirection(Rods::span(world, s), Rods::linkOf(s), unit);
-    if (kTwoMovable && moving == 2) {
-      rattleBoth(world, s);
-      return;
-    }
-    bool fromB;
-    P& end = movingEnd<kAnchored>(world, s, fromB);
-    detail::removeAlong(end.velocity, Rods::linkOf(s).direction);
-  }
-
-
-  // How many ends of the rod move: 0, 1 or 2 (at most 1 without
-  // kTwoMovable: b is an anchor, or the world's rods each have one
-  // immovable end, LoneRods::allLone()).
-  template <bool kTwoMovable, bool kAnchored>
-  static uint8_t movingEnds(W& world, const Slot& s) {
-    if (kAnchored) return uint8_t(!isImmovable(world, s.a));
-    if (!kTwoMovable) {
-      return uint8_t(!isImmovable(world, s.a) || !isImmovable(world, s.b));
-    }
-    return uint8_t(!isImmovable(world, s.a)) +
-           uint8_t(!isImmovable(world, s.b));
-  }
-
-  // A rod with two movable ends (a free dumbbell, or a world of one
-  // constraint slot whose rod joins two movable particles): the change of
-  // their relative speed is shared in the ratio of the inverse masses, a's
-  // share w_a / (w_a + w_b) and b's the rest. Out of line: rare. Through
-  // the compact reciprocal (rounded twice: a unit at most), so that a world
-  // whose step never divides elsewhere (the lever) links no fast divide.
-  static S shareOfA(const P& a, const P& b) {
-    return a.inverseMass *
-           detail::compactReciprocalOfPositive(a.inverseMass + b.inverseMass);
-  }
-  // The change `speed` of the relative speed along u, and the move
-  // `error` along it, shared between the two ends.
-  TINYPARTICLE_NOINLINE static void shareBoth(W& world, const Slot& s,
-                                              S speed, S error) {
-    P& a = world.particleAt(s.a);
-    P& b = world.particleAt(s.b);
-    const V& u = Rods::linkOf(s).direction;
-    const S share = shareOfA(a, b);
-    pushApart(a.velocity, b.velocity, u, speed, share);
-    if (!detail::isZero(error)) {
-      pushApart(a.position, b.position, u, error, share);
-    }
-  }
-  // x gets `amount` times `share` along u, y the rest against it.
-  TINYPARTICLE_NOINLINE static void pushApart(V& x, V& y, const V& u,
-                                              S amount, S share) {
-    const S toX = amount * share;
-    x.addScaled(u, toX);
-    y.addScaled(u, toX - amount);
-  }
-  // RATTLE for two moving ends: their relative speed along u, r, is taken
-  // out as a change -r shared as above (shareBoth(): a gets (-r) w, which
-  // is -(r w) to the bit, as a product rounds ties away from zero; b gets
-  // (-r) w - (-r) = r - r w; in fixed point all but r = S::lowest(),
-  // which -r saturates: a relative speed no step reaches).
-  TINYPARTICLE_NOINLINE static void rattleBoth(W& world, const Slot& s) {
-    const V& u = Rods::linkOf(s).direction;
-    V relative = world.particleAt(s.a).velocity;
-    relative -= world.particleAt(s.b).velocity;
-    const S radial = detail::dotOutOfLine(relative, u);
-    shareBoth(world, s, -radial, S());
+    return p >= W::kParticleCapacity ||
+           WorldAccess::particle(world, p).isStatic();
   }
 };
 

@@ -1003,7 +1003,7 @@ class World
   ConstraintId rodAdded(ConstraintId id) {
     if (!startRod(id)) return ConstraintId();
     RodStore::setRodSolver(kConstraints == 1
-                               ? &LoneRods<World>::template solve<true>
+                               ? &LoneRods<World>::template solve<false>
                                : &RodSolver<World>::solve);
     return id;
   }
@@ -1014,7 +1014,7 @@ class World
   // chains' solve, which solves any rods.
   ConstraintId anchoredRodAdded(ConstraintId id) {
     if (!startRod(id)) return ConstraintId();
-    const RodSolve lone = &LoneRods<World>::template solve<false>;
+    const RodSolve lone = &LoneRods<World>::template solve<true>;
     const RodSolve current = RodStore::rodSolver();
     if (current == nullptr) {
       RodStore::setRodSolver(lone);
