@@ -63,42 +63,39 @@ struct LoneRod {
   typedef typename Eq::P P;
   typedef typename Eq::V V;
 
-  // The position solve (SHAKE) of the rod between particles[a] and
-  // particles[b] (b kAnchorIndex: an anchor): the change of the ends'
-  // relative speed along u that brings the rod to its length at the end
-  // of the step, and the move that mends its length now, shared between
-  // the ends. (Through the chains' rightSide() it cost 400 cycles more.)
-  TINYPARTICLE_NOINLINE static void shake(P* particles, uint8_t a, uint8_t b,
+  // One of the two solves of the rod between particles[a] and particles[b]
+  // (b kAnchorIndex: an anchor), one path for both, as the ends' share is
+  // the same:
+  // - pass.positions (SHAKE): the change of the ends' relative speed along
+  //   u that brings the rod to its length at the end of the step, and the
+  //   move that mends its length now (Eq::positionSpeed(); through the
+  //   chains' rightSide() it cost 400 cycles more);
+  // - else (RATTLE): the new direction (a unit vector after a fast turn,
+  //   pass.turned), and the ends' relative speed along it, r, taken out as
+  //   a change -r (a gets (-r) w, which is -(r w) to the bit, as a product
+  //   rounds ties away from zero; b gets (-r) w - (-r) = r - r w; in fixed
+  //   point all but r = S::lowest(), which -r saturates: a relative speed
+  //   no step reaches).
+  TINYPARTICLE_NOINLINE static void solve(P* particles, uint8_t a, uint8_t b,
                                           Link& link, Pass& pass) {
     const Ends ends(particles, a, b);
     if (ends.isFixed()) return;
+    const V d = Eq::span(*ends.a, ends.b, link);
     const V& u = link.direction;
-    S error;
-    bool turning;
-    const S speed =
-        Eq::positionSpeed(Eq::span(*ends.a, ends.b, link),
-                          ends.relativeVelocity(), u, link, pass, error,
-                          turning);
-    if (turning) pass.turned = true;
+    S amount;
+    S error = S();
+    if (pass.positions) {
+      bool turning;
+      amount = Eq::positionSpeed(d, ends.relativeVelocity(), u, link, pass,
+                                 error, turning);
+      if (turning) pass.turned = true;
+    } else {
+      Eq::setDirection(d, link, pass.turned);
+      amount = -detail::dotOutOfLine(ends.relativeVelocity(), u);
+    }
     const S share = ends.shareOfA();
-    ends.pushApart(&P::velocity, u, speed, share);
+    ends.pushApart(&P::velocity, u, amount, share);
     if (!detail::isZero(error)) ends.pushApart(&P::position, u, error, share);
-  }
-
-  // The new direction, and the velocity solve (RATTLE): the ends'
-  // relative speed along u, r, is taken out as a change -r shared as
-  // above (a gets (-r) w, which is -(r w) to the bit, as a product rounds
-  // ties away from zero; b gets (-r) w - (-r) = r - r w; in fixed point all
-  // but r = S::lowest(), which -r saturates: a relative speed no step
-  // reaches). A rod with one movable end takes its speed along u.
-  TINYPARTICLE_NOINLINE static void rattle(P* particles, uint8_t a, uint8_t b,
-                                           Link& link, bool unit) {
-    const Ends ends(particles, a, b);
-    if (ends.isFixed()) return;
-    Eq::setDirection(Eq::span(*ends.a, ends.b, link), link, unit);
-    const V& u = link.direction;
-    const S radial = detail::dotOutOfLine(ends.relativeVelocity(), u);
-    ends.pushApart(&P::velocity, u, -radial, ends.shareOfA());
   }
 
  private:
@@ -195,20 +192,17 @@ struct LoneRods {
     Pass pass(byDt, invDt);
     pass.unit = false;
     typename W::ParticleType* particles = &WorldAccess::particle(world, 0);
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (Rods::isRodAt(world, i)) {
-        Slot& s = WorldAccess::constraint(world, i);
-        Rod::shake(particles, s.a, s.b, Rods::linkOf(s), pass);
+    for (;;) {
+      for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+        if (Rods::isRodAt(world, i)) {
+          Slot& s = WorldAccess::constraint(world, i);
+          Rod::solve(particles, s.a, s.b, Rods::linkOf(s), pass);
+        }
       }
-    }
-    // After a fast turn, unit directions (see above).
-    const bool unit = pass.turned;
-    WorldAccess::movePositions(world, byDt);
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (Rods::isRodAt(world, i)) {
-        Slot& s = WorldAccess::constraint(world, i);
-        Rod::rattle(particles, s.a, s.b, Rods::linkOf(s), unit);
-      }
+      if (!pass.positions) break;
+      // After a fast turn (pass.turned), unit directions (see above).
+      WorldAccess::movePositions(world, byDt);
+      pass.positions = false;
     }
   }
 

@@ -109,11 +109,23 @@ struct RodEquations {
   };
 
   // The vector from b to a; b null for an anchor.
-  static V span(const P& a, const P* b, const Link& link) {
+  TINYPARTICLE_NOINLINE static V span(const P& a, const P* b,
+                                      const Link& link) {
     V d = a.position;
     // (A pivot is often at the origin: zeros are skipped.)
     detail::subtractNonZero(d, b == nullptr ? link.anchor : b->position);
     return d;
+  }
+
+  // A rod's first direction. Ends that coincide have no direction: any
+  // will do (as for colliding balls), and the rod pushes them apart along
+  // it. (With none, they stayed together, unflagged: extras/stability.)
+  // Out of line: the set-up's frame stays small.
+  TINYPARTICLE_NOINLINE static void startDirection(const P& a, const P* b,
+                                                   Link& link) {
+    V& d = link.direction;
+    d = span(a, b, link);
+    if (!detail::normalizeByMultiplies(d)) d.y = S(1);  // d is 0
   }
 
   // A rod's direction from its span d. Near its length, d / L is nearly a
@@ -294,12 +306,9 @@ struct RodSolver {
     typename W::LinkParamsType& link = linkOf(s);
     if (!(link.length > S())) return false;
     link.inverseLength = detail::compactReciprocalOfPositive(link.length);
-    V d = span(world, s);
-    // Ends that coincide have no direction: any will do (as for colliding
-    // balls), and the rod pushes them apart along it. (With none, they
-    // stayed together, unflagged: extras/stability.)
-    if (!detail::normalizeByMultiplies(d)) d.y = S(1);
-    link.direction = d;
+    Eq::startDirection(world.particleAt(s.a),
+                       s.b == kAnchorIndex ? nullptr : &world.particleAt(s.b),
+                       link);
     link.next = link.prev = kNoIndex;
     return true;
   }
