@@ -14,13 +14,14 @@
 // one unit more.
 // A unit vector: each component within 3 units (the inverse square root's
 // relative error on components below 1, plus the product's rounding). The
-// turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or two
-// inverse square roots on arguments near 1); the same in units of 2^-8
-// for Q24.8. Float (a guess from the bits and three Newton steps): 4 units
-// of 2^-24 relative for the inverse square root, 8 for the turn factor; a
-// unit vector's components within 6 units of 2^-24 (the root's 4, the
-// square's and the product's roundings), from the smallest subnormal to
-// the largest float; a zero, infinite or NaN component: false, unchanged.
+// turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or an
+// inverse square root and the compact reciprocal on arguments near 1); the
+// same in units of 2^-8 for Q24.8. Float (a guess from the bits and three
+// Newton steps): 4 units of 2^-24 relative for the inverse square root, 8
+// for the turn factor; a unit vector's components within 6 units of 2^-24
+// (the root's 4, the square's and the product's roundings), from the
+// smallest subnormal to the largest float; a zero, infinite or NaN
+// component: false, unchanged.
 #include <AUnit.h>
 #include <TinyParticle.h>
 #include <TinyParticle/Math/Newton.hpp>

@@ -157,8 +157,7 @@ inline Float turnDropFactor(Float h) {
   }
   if (!(h < Float(0.5))) return Float(2);
   const Float m = Float(1) - (h + h);
-  const Float t = Float(1) + m * inverseSqrt(m);
-  const Float r = inverseSqrt(t * t);
+  const Float r = compactReciprocalOfPositive(Float(1) + m * inverseSqrt(m));
   return r + r;
 }
 // Fixed: up to h = 1/32 (a turn of 1/4 rad) the series 1 + h/2 + h^2/2 +
@@ -166,7 +165,8 @@ inline Float turnDropFactor(Float h) {
 // whose term in h^n is below 1.4 (1/32)^n there: cut after the last term
 // that reaches half a unit of the format (h^3 for 16 fraction bits: the
 // rest is below 9e-7; h for 8 bits: below 5e-4). Beyond, Newton's steps
-// (rare: a whip), with sqrt(m) = m / sqrt(m) and 1 / t = 1 / sqrt(t^2).
+// (rare: a whip), with sqrt(m) = m / sqrt(m), and 1 / t by the compact
+// reciprocal (Fixed.hpp: linked anyway for a rod's 1 / L and for 1 / dt).
 template <uint8_t I, uint8_t F>
 Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   typedef Fixed<I, F> S;
@@ -180,8 +180,7 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   }
   if (!(h < S(0.5))) return S(2);
   const S m = S(1) - (h + h);
-  const S t = S(1) + m * inverseSqrt(m);
-  const S r = inverseSqrt(t * t);
+  const S r = compactReciprocalOfPositive(S(1) + m * inverseSqrt(m));
   return r + r;
 }
 
