@@ -122,14 +122,13 @@ struct LoneRod {
       return w;
     }
     // The part of a change of the ends' relative speed that a takes when
-    // both move: its inverse mass over both ends'. Through the compact
-    // reciprocal (rounded twice: a unit at most), so that a world whose
+    // both move: its inverse mass over both ends'. Through the reciprocal
+    // of Math/Newton.hpp (a unit or two at most), so that a world whose
     // step never divides elsewhere links no fast divide.
     S shareOfA() const {
       if (movingA == nullptr || !bMoves()) return S();
-      return a->inverseMass *
-             detail::compactReciprocalOfPositive(a->inverseMass +
-                                                 b->inverseMass);
+      return a->inverseMass * detail::reciprocalByMultiplies(a->inverseMass +
+                                                             b->inverseMass);
     }
     // A change `amount` of the ends' relative (field: velocity or
     // position) along u: all of it to the one movable end, or `share` of

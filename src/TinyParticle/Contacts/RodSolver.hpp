@@ -299,13 +299,13 @@ struct RodSolver {
   static void generate(W&, Slot&, uint8_t) {}
 
   // A rod just added: its length's inverse and its first direction. False
-  // (nothing set) for a length that is not positive. The compact
-  // reciprocal and Newton's unit vector (Math/Newton.hpp): a world whose
-  // step never divides links no fast divide.
+  // (nothing set) for a length that is not positive. Newton's reciprocal
+  // and unit vector (Math/Newton.hpp): a world whose step never divides
+  // links no fast divide (nor, in float, the float divide).
   static bool start(W& world, Slot& s) {
     typename W::LinkParamsType& link = linkOf(s);
     if (!(link.length > S())) return false;
-    link.inverseLength = detail::compactReciprocalOfPositive(link.length);
+    link.inverseLength = detail::reciprocalByMultiplies(link.length);
     Eq::startDirection(world.particleAt(s.a),
                        s.b == kAnchorIndex ? nullptr : &world.particleAt(s.b),
                        link);
