@@ -4,13 +4,25 @@
 // another, so there is nothing to eliminate, and each rod is solved in one
 // pass with the step equations of the chains' solve (Contacts/RodSolver.hpp:
 // positionSpeed(), exact at any turn), about 24 multiplies per rod and step
-// in 2D, no division and no square root (in fixed point not even when it
-// turns fast, or at set-up: Math/Newton.hpp).
+// in 2D, no division and no square root (not even when it turns fast, or
+// at set-up: Math/Newton.hpp).
+//
+// The code is in two parts (issue 12): LoneRod<S, Dim, kAnchored>, the
+// solves of one rod, a template over the scalar and dimension alone, so
+// that every World type of a sketch with the same S and Dim shares one
+// copy; and LoneRods<W>, the world's walk over its slots, the only part
+// that each World type links for itself. One path serves every rod: an
+// immovable end (an anchor, or a particle of no inverse mass) is an end of
+// inverse mass 0, and the ends share each change in the ratio of their
+// inverse masses, so that a rod with two movable ends takes the same code
+// as a pendulum's, with a reciprocal for the share. kAnchored (every rod
+// hangs from an anchor: World::anchoredRodAdded()) leaves out what serves
+// a rod between two particles.
 //
 // Which solver a world links (World::rodAdded()): a world whose rods can
 // never share a particle takes this one alone, and the chains' solve (the
-// larger part of Contacts/RodSolver.hpp) is not linked. That is a world of one constraint slot,
-// and a world whose rods all hang from anchors (addRod(particle, anchor,
+// larger part of Contacts/RodSolver.hpp) is not linked. That is a world
+// of one constraint slot, and a world whose rods all hang from anchors (addRod(particle, anchor,
 // length)), where a particle takes one rod: a second anchored rod on the
 // same particle is refused (WorldError::kBadArgument) while the world has
 // no rod between two particles. The first rod between two particles, in a
@@ -19,8 +31,8 @@
 //
 // Two savings over the chains' solve make the lever's step about 40 %
 // cheaper (measured):
-// - no rows, passes or divisions (a rod with two movable ends divides
-//   once in each of the two solves, for its ends' shares);
+// - no rows, passes or divisions (a rod with two movable ends takes a
+//   reciprocal in each of the two solves, for its ends' shares);
 // - the direction kept between steps is d / L, not normalised: the Newton
 //   step costs four multiplies, and d / L serves as well. With |u| = 1 + e
 //   (e a few units of rounding), the velocity solve leaves 2e of a speed
@@ -82,16 +94,17 @@ struct LoneRod {
     if (ends.isFixed()) return;
     const V d = Eq::span(*ends.a, ends.b, link);
     const V& u = link.direction;
+    V relative;
     S amount;
     S error = S();
     if (pass.positions) {
       bool turning;
-      amount = Eq::positionSpeed(d, ends.relativeVelocity(), u, link, pass,
-                                 error, turning);
+      amount = Eq::positionSpeed(d, ends.relativeVelocity(relative), u, link,
+                                 pass, error, turning);
       if (turning) pass.turned = true;
     } else {
       Eq::setDirection(d, link, pass.turned);
-      amount = -detail::dotOutOfLine(ends.relativeVelocity(), u);
+      amount = -detail::dotOutOfLine(ends.relativeVelocity(relative), u);
     }
     const S share = ends.shareOfA();
     ends.pushApart(&P::velocity, u, amount, share);
@@ -114,11 +127,12 @@ struct LoneRod {
 
     bool bMoves() const { return !kAnchored && movingB != nullptr; }
     bool isFixed() const { return movingA == nullptr && !bMoves(); }
-    // va - vb, an immovable end at rest.
-    TINYPARTICLE_ALWAYS_INLINE V relativeVelocity() const {
-      V w;
+    // va - vb, an immovable end at rest: a's velocity itself where b does
+    // not move (a does then), else computed in w.
+    TINYPARTICLE_ALWAYS_INLINE const V& relativeVelocity(V& w) const {
+      if (!bMoves()) return movingA->velocity;
       if (movingA != nullptr) w = movingA->velocity;
-      if (bMoves()) w -= movingB->velocity;
+      w -= movingB->velocity;
       return w;
     }
     // The part of a change of the ends' relative speed that a takes when
