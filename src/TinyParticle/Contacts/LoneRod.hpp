@@ -7,7 +7,7 @@
 // in 2D, no division and no square root (not even when it turns fast, or
 // at set-up: Math/Newton.hpp).
 //
-// The code is in two parts (issue 12): LoneRod<S, Dim, kAnchored>, the
+// The code is in two parts (issue 12): LoneRod<S, Dim, kEnds>, the
 // solves of one rod, a template over the scalar and dimension alone, so
 // that every World type of a sketch with the same S and Dim shares one
 // copy; and LoneRods<W>, the world's walk over its slots, the only part
@@ -15,9 +15,9 @@
 // immovable end (an anchor, or a particle of no inverse mass) is an end of
 // inverse mass 0, and the ends share each change in the ratio of their
 // inverse masses, so that a rod with two movable ends takes the same code
-// as a pendulum's, with a reciprocal for the share. kAnchored (every rod
-// hangs from an anchor: World::anchoredRodAdded()) leaves out what serves
-// a rod between two particles.
+// as a pendulum's, with a reciprocal for the share. kEnds (LoneEnds)
+// leaves out what a world's rods cannot need: the share where each rod has
+// an immovable end, and all of b where b is always an anchor.
 //
 // Which solver a world links (World::rodAdded()): a world whose rods can
 // never share a particle takes this one alone, and the chains' solve (the
@@ -66,13 +66,15 @@ namespace tinyparticle {
 // World<S, Dim, ...> of a sketch shares one copy (issue 12). One path for
 // every rod: an immovable end (an anchor, or a particle of no inverse mass
 // at the start of the step) is an end of inverse mass 0, so that the rod of
-// a pendulum and a free dumbbell run the same code.
-template <typename S, uint8_t Dim, bool kAnchored>
+// a pendulum and a free dumbbell run the same code; kEnds (LoneEnds) leaves
+// out what a world's rods cannot need.
+template <typename S, uint8_t Dim, uint8_t kEnds>
 struct LoneRod {
   typedef RodEquations<S, Dim> Eq;
   typedef typename Eq::Pass Pass;
   typedef typename Eq::Link Link;
   typedef typename Eq::P P;
+  static const bool kAnchored = kEnds == LoneEnds::kAnchored;
   typedef typename Eq::V V;
 
   // One of the two solves of the rod between particles[a] and particles[b]
@@ -92,7 +94,7 @@ struct LoneRod {
                                           Link& link, Pass& pass) {
     const Ends ends(particles, a, b);
     if (ends.isFixed()) return;
-    const V d = Eq::span(*ends.a, ends.b, link);
+    const V d = Eq::span(particles, a, kAnchored ? kAnchorIndex : b, link);
     const V& u = link.direction;
     V relative;
     S amount;
@@ -126,6 +128,11 @@ struct LoneRod {
     P* movingB;
 
     bool bMoves() const { return !kAnchored && movingB != nullptr; }
+    // Whether both may move.
+    bool bothMove() const {
+      return kEnds == LoneEnds::kTwoMovable && movingA != nullptr &&
+             movingB != nullptr;
+    }
     bool isFixed() const { return movingA == nullptr && !bMoves(); }
     // va - vb, an immovable end at rest: a's velocity itself where b does
     // not move (a does then), else computed in w.
@@ -140,7 +147,7 @@ struct LoneRod {
     // of Math/Newton.hpp (a unit or two at most), so that a world whose
     // step never divides elsewhere links no fast divide.
     S shareOfA() const {
-      if (movingA == nullptr || !bMoves()) return S();
+      if (!bothMove()) return S();
       return a->inverseMass * detail::reciprocalByMultiplies(a->inverseMass +
                                                              b->inverseMass);
     }
@@ -150,7 +157,7 @@ struct LoneRod {
     void pushApart(V P::*field, const V& u, S amount, S share) const {
       S toA = amount;
       if (bMoves()) {
-        toA = movingA == nullptr ? S() : amount * share;
+        toA = bothMove() ? amount * share : S();
         (movingB->*field).addScaled(u, toA - amount);
       }
       if (movingA != nullptr) (movingA->*field).addScaled(u, toA);
@@ -167,14 +174,13 @@ struct LoneRods {
 
   // The world's rod solve when its rods never share a particle (see the
   // top of this file): World::rodAdded() and anchoredRodAdded() set it.
-  // kAnchored: every rod hangs from an anchor (b), and the code for rods
-  // between particles is not linked.
-  template <bool kAnchored>
+  // kEnds: LoneEnds::kAnchored or kTwoMovable.
+  template <uint8_t kEnds>
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (WorldAccess::rodState(world) & W::kRodsChanged) {
       WorldAccess::setRodState(world, W::kRodsLone);
     }
-    solveAll<kAnchored>(world, byDt, WorldAccess::inverseDt(world, dt));
+    solveAll<kEnds>(world, byDt, WorldAccess::inverseDt(world, dt));
   }
 
   // Whether rod slot `rod` may join a world solved here: its particle a is
@@ -199,9 +205,9 @@ struct LoneRods {
   // Both solves for rods that share no particle: positions (SHAKE), the
   // move, directions and velocities (RATTLE). The world's part is only
   // the walk over its slots: the solves are LoneRod's, shared.
-  template <bool kAnchored = false>
+  template <uint8_t kEnds>
   static void solveAll(W& world, const Scaler<S>& byDt, S invDt) {
-    typedef LoneRod<S, W::kDimensions, kAnchored> Rod;
+    typedef LoneRod<S, W::kDimensions, kEnds> Rod;
     Pass pass(byDt, invDt);
     pass.unit = false;
     typename W::ParticleType* particles = &WorldAccess::particle(world, 0);

@@ -108,12 +108,14 @@ struct RodEquations {
     S worst;         // the largest correction of a length, m
   };
 
-  // The vector from b to a; b null for an anchor.
-  TINYPARTICLE_NOINLINE static V span(const P& a, const P* b,
-                                      const Link& link) {
-    V d = a.position;
+  // The vector from particles[b] (link.anchor for kAnchorIndex) to
+  // particles[a].
+  TINYPARTICLE_NOINLINE static V span(const P* particles, uint8_t a,
+                                      uint8_t b, const Link& link) {
+    V d = particles[a].position;
     // (A pivot is often at the origin: zeros are skipped.)
-    detail::subtractNonZero(d, b == nullptr ? link.anchor : b->position);
+    detail::subtractNonZero(
+        d, b == kAnchorIndex ? link.anchor : particles[b].position);
     return d;
   }
 
@@ -121,10 +123,11 @@ struct RodEquations {
   // will do (as for colliding balls), and the rod pushes them apart along
   // it. (With none, they stayed together, unflagged: extras/stability.)
   // Out of line: the set-up's frame stays small.
-  TINYPARTICLE_NOINLINE static void startDirection(const P& a, const P* b,
+  TINYPARTICLE_NOINLINE static void startDirection(const P* particles,
+                                                   uint8_t a, uint8_t b,
                                                    Link& link) {
     V& d = link.direction;
-    d = span(a, b, link);
+    d = span(particles, a, b, link);
     if (!detail::normalizeByMultiplies(d)) d.y = S(1);  // d is 0
   }
 
@@ -271,6 +274,15 @@ struct RodEquations {
 
 };
 
+// Which ends of a world's lone rods may move, as far as the code must
+// know: kAnchored, b is always an anchor (World::anchoredRodAdded());
+// kOneMovable, one end of each rod is immovable, a or b (what the chains'
+// solve hands over, LoneRods::allLone()); kTwoMovable, any (a world of one
+// constraint slot whose rod joins two particles, World::rodAdded()).
+struct LoneEnds {
+  enum : uint8_t { kAnchored, kOneMovable, kTwoMovable };
+};
+
 template <class W>
 struct LoneRods;
 
@@ -306,9 +318,7 @@ struct RodSolver {
     typename W::LinkParamsType& link = linkOf(s);
     if (!(link.length > S())) return false;
     link.inverseLength = detail::reciprocalByMultiplies(link.length);
-    Eq::startDirection(world.particleAt(s.a),
-                       s.b == kAnchorIndex ? nullptr : &world.particleAt(s.b),
-                       link);
+    Eq::startDirection(&world.particleAt(0), s.a, s.b, link);
     link.next = link.prev = kNoIndex;
     return true;
   }
@@ -319,7 +329,8 @@ struct RodSolver {
     const S invDt = WorldAccess::inverseDt(world, dt);
     if ((WorldAccess::rodState(world) & W::kRodsLone) &&
         LoneRods<W>::allLone(world)) {
-      LoneRods<W>::solveAll(world, byDt, invDt);
+      LoneRods<W>::template solveAll<LoneEnds::kOneMovable>(world, byDt,
+                                                             invDt);
       return;
     }
     step(world, byDt, invDt, true);
@@ -596,10 +607,8 @@ struct RodSolver {
   // ---- The solves ---------------------------------------------------------
 
   // The vector from b to a.
-  static V span(W& world, const Slot& s) {
-    return Eq::span(world.particleAt(s.a),
-                    s.b == kAnchorIndex ? nullptr : &world.particleAt(s.b),
-                    linkOf(s));
+  TINYPARTICLE_NOINLINE static V span(W& world, const Slot& s) {
+    return Eq::span(&world.particleAt(0), s.a, s.b, linkOf(s));
   }
 
   // va - vb (b at rest when it is an anchor or fixed).
