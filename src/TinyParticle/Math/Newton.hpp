@@ -96,8 +96,8 @@ template <typename S>
 TINYPARTICLE_ALWAYS_INLINE S reciprocalByMultiplies(S x) {
   return compactReciprocalOfPositive(x);
 }
-// Float: without the float divide (about 250 B on AVR, which a step that
-// never divides then does not link), by Newton's steps r += r (1 - x r)
+// Float: without the float divide (which a sketch whose step never
+// divides then does not link), by Newton's steps r += r (1 - x r)
 // from a first guess from the bits (the exponent negated by subtracting
 // the word from a constant: within 5.1 %); each step squares the relative
 // error: 2.6e-3, 6.5e-6, 4e-11, then the last step's rounding: within 2
