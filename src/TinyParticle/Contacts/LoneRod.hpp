@@ -74,8 +74,8 @@ struct LoneRod {
   typedef typename Eq::Pass Pass;
   typedef typename Eq::Link Link;
   typedef typename Eq::P P;
-  static const bool kAnchored = kEnds == LoneEnds::kAnchored;
   typedef typename Eq::V V;
+  static const bool kAnchored = kEnds == LoneEnds::kAnchored;
 
   // One of the two solves of the rod between particles[a] and particles[b]
   // (b kAnchorIndex: an anchor), one path for both, as the ends' share is
