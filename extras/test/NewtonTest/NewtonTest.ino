@@ -14,13 +14,14 @@
 // one unit more.
 // A unit vector: each component within 3 units (the inverse square root's
 // relative error on components below 1, plus the product's rounding). The
-// turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or two
-// inverse square roots on arguments near 1); the same in units of 2^-8
-// for Q24.8. Float (a guess from the bits and three Newton steps): 4 units
-// of 2^-24 relative for the inverse square root, 8 for the turn factor; a
-// unit vector's components within 6 units of 2^-24 (the root's 4, the
-// square's and the product's roundings), from the smallest subnormal to
-// the largest float; a zero, infinite or NaN component: false, unchanged.
+// turn factor in [1, 2]: 4 units (a polynomial of 4 rounded steps, or an
+// inverse square root and the compact reciprocal on arguments near 1); the
+// same in units of 2^-8 for Q24.8. Float (a guess from the bits and three
+// Newton steps): 4 units of 2^-24 relative for the inverse square root, 8
+// for the turn factor; a unit vector's components within 6 units of 2^-24
+// (the root's 4, the square's and the product's roundings), from the
+// smallest subnormal to the largest float; a zero, infinite or NaN
+// component: false, unchanged.
 #include <AUnit.h>
 #include <TinyParticle.h>
 #include <TinyParticle/Math/Newton.hpp>
@@ -29,6 +30,7 @@
 using aunit::TestRunner;
 using tinyparticle::detail::inverseSqrt;
 using tinyparticle::detail::normalizeByMultiplies;
+using tinyparticle::detail::reciprocalByMultiplies;
 using tinyparticle::detail::turnDropFactor;
 
 typedef Q16_16 T;
@@ -197,6 +199,43 @@ test(floatInverseSqrtAndTurnFactor) {
 
 static uint32_t floatBitsOf(Float x) {
   return tinyparticle::detail::floatBits(x);
+}
+
+static float floatWithBits(uint32_t bits) {
+  float f;
+  memcpy(&f, &bits, sizeof(f));
+  return f;
+}
+
+// The reciprocal without the float divide: Newton's steps from a guess
+// from the bits. Every exponent of a normal x whose reciprocal is normal
+// (2^-126 to below 2^126), each with the ends of the significand, its
+// middle and a few inside (the guess's error depends on the significand
+// alone): within 2 units of 2^-24 relative (the last step's rounding).
+// Any other x (beyond that range, infinity, NaN, subnormals, 0 and
+// negatives) gives 0.
+test(floatReciprocalAtEveryExponent) {
+  gFailures = 0;
+  const uint32_t significands[] = {0, 1, 2, 0x123456, 0x3504F3, 0x400000,
+                                   0x5A827A, 0x7FFFFE, 0x7FFFFF};
+  for (uint32_t e = 1; e < 253; ++e) {
+    for (uint8_t k = 0; k < sizeof(significands) / sizeof(significands[0]);
+         ++k) {
+      const float x = floatWithBits((e << 23) | significands[k]);
+      const double want = 1.0 / double(x);
+      const double got = reciprocalByMultiplies(Float(x)).toFloat();
+      if (fabs(got - want) > 2 * 5.9604645e-8 * want) {
+        fail(F("float reciprocal"), x, got, want);
+      }
+    }
+  }
+  assertEqual(gFailures, (uint16_t)0);
+  const float outside[] = {ldexpf(1.0f, 126), 3.4e38f, INFINITY, NAN,
+                           -NAN, 0.0f, -0.0f, -1.0f, 1.0e-40f, -INFINITY,
+                           floatWithBits(0x007FFFFFul)};
+  for (uint8_t k = 0; k < sizeof(outside) / sizeof(outside[0]); ++k) {
+    assertTrue(floatBitsOf(reciprocalByMultiplies(Float(outside[k]))) == 0);
+  }
 }
 
 static void checkFloatUnit(float x, float y) {

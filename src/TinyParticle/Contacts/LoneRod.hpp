@@ -4,13 +4,25 @@
 // another, so there is nothing to eliminate, and each rod is solved in one
 // pass with the step equations of the chains' solve (Contacts/RodSolver.hpp:
 // positionSpeed(), exact at any turn), about 24 multiplies per rod and step
-// in 2D, no division and no square root (in fixed point not even when it
-// turns fast, or at set-up: Math/Newton.hpp).
+// in 2D, no division and no square root (not even when it turns fast, or
+// at set-up: Math/Newton.hpp).
+//
+// The code is in two parts (issue 12): LoneRod<S, Dim, kEnds>, the
+// solves of one rod, a template over the scalar and dimension alone, so
+// that every World type of a sketch with the same S and Dim shares one
+// copy; and LoneRods<W>, the world's walk over its slots, the only part
+// that each World type links for itself. One path serves every rod: an
+// immovable end (an anchor, or a particle of no inverse mass) is an end of
+// inverse mass 0, and the ends share each change in the ratio of their
+// inverse masses, so that a rod with two movable ends takes the same code
+// as a pendulum's, with a reciprocal for the share. kEnds (LoneEnds)
+// leaves out what a world's rods cannot need: the share where each rod has
+// an immovable end, and all of b where b is always an anchor.
 //
 // Which solver a world links (World::rodAdded()): a world whose rods can
 // never share a particle takes this one alone, and the chains' solve (the
-// larger part of Contacts/RodSolver.hpp) is not linked. That is a world of one constraint slot,
-// and a world whose rods all hang from anchors (addRod(particle, anchor,
+// larger part of Contacts/RodSolver.hpp) is not linked. That is a world
+// of one constraint slot, and a world whose rods all hang from anchors (addRod(particle, anchor,
 // length)), where a particle takes one rod: a second anchored rod on the
 // same particle is refused (WorldError::kBadArgument) while the world has
 // no rod between two particles. The first rod between two particles, in a
@@ -19,8 +31,8 @@
 //
 // Two savings over the chains' solve make the lever's step about 40 %
 // cheaper (measured):
-// - no rows, passes or divisions (a rod with two movable ends divides
-//   once in each of the two solves, for its ends' shares);
+// - no rows, passes or divisions (a rod with two movable ends takes a
+//   reciprocal in each of the two solves, for its ends' shares);
 // - the direction kept between steps is d / L, not normalised: the Newton
 //   step costs four multiplies, and d / L serves as well. With |u| = 1 + e
 //   (e a few units of rounding), the velocity solve leaves 2e of a speed
@@ -49,28 +61,126 @@
 
 namespace tinyparticle {
 
+// One lone rod's two solves, on its ends a and b (b null for an anchor).
+// A template over the scalar and dimension alone, out of line: every
+// World<S, Dim, ...> of a sketch shares one copy (issue 12). One path for
+// every rod: an immovable end (an anchor, or a particle of no inverse mass
+// at the start of the step) is an end of inverse mass 0, so that the rod of
+// a pendulum and a free dumbbell run the same code; kEnds (LoneEnds) leaves
+// out what a world's rods cannot need.
+template <typename S, uint8_t Dim, uint8_t kEnds>
+struct LoneRod {
+  typedef RodEquations<S, Dim> Eq;
+  typedef typename Eq::Pass Pass;
+  typedef typename Eq::Link Link;
+  typedef typename Eq::P P;
+  typedef typename Eq::V V;
+  static const bool kAnchored = kEnds == LoneEnds::kAnchored;
+
+  // One of the two solves of the rod between particles[a] and particles[b]
+  // (b kAnchorIndex: an anchor), one path for both, as the ends' share is
+  // the same:
+  // - pass.positions (SHAKE): the change of the ends' relative speed along
+  //   u that brings the rod to its length at the end of the step, and the
+  //   move that mends its length now (Eq::positionSpeed(); through the
+  //   chains' rightSide() it cost 400 cycles more);
+  // - else (RATTLE): the new direction (a unit vector after a fast turn,
+  //   pass.turned), and the ends' relative speed along it, r, taken out as
+  //   a change -r (a gets (-r) w, which is -(r w) to the bit, as a product
+  //   rounds ties away from zero; b gets (-r) w - (-r) = r - r w; in fixed
+  //   point all but r = S::lowest(), which -r saturates: a relative speed
+  //   no step reaches).
+  TINYPARTICLE_NOINLINE static void solve(P* particles, uint8_t a, uint8_t b,
+                                          Link& link, Pass& pass) {
+    const Ends ends(particles, a, b);
+    if (ends.isFixed()) return;
+    const V d = Eq::span(particles, a, kAnchored ? kAnchorIndex : b, link);
+    const V& u = link.direction;
+    V relative;
+    S amount;
+    S error = S();
+    if (pass.positions) {
+      bool turning;
+      amount = Eq::positionSpeed(d, ends.relativeVelocity(relative), u, link,
+                                 pass, error, turning);
+      if (turning) pass.turned = true;
+    } else {
+      Eq::setDirection(d, link, pass.turned);
+      amount = -detail::dotOutOfLine(ends.relativeVelocity(relative), u);
+    }
+    const S share = ends.shareOfA();
+    ends.pushApart(&P::velocity, u, amount, share);
+    if (!detail::isZero(error)) ends.pushApart(&P::position, u, error, share);
+  }
+
+ private:
+  // A rod's ends (b null for an anchor), and those that move (null where
+  // the end is immovable).
+  struct Ends {
+    TINYPARTICLE_ALWAYS_INLINE Ends(P* particles, uint8_t ia, uint8_t ib)
+        : a(&particles[ia]),
+          b(kAnchored || ib == kAnchorIndex ? nullptr : &particles[ib]),
+          movingA(a->isStatic() ? nullptr : a),
+          movingB(b == nullptr || b->isStatic() ? nullptr : b) {}
+    P* a;
+    P* b;
+    P* movingA;
+    P* movingB;
+
+    bool bMoves() const { return !kAnchored && movingB != nullptr; }
+    // Whether both may move.
+    bool bothMove() const {
+      return kEnds == LoneEnds::kTwoMovable && movingA != nullptr &&
+             movingB != nullptr;
+    }
+    bool isFixed() const { return movingA == nullptr && !bMoves(); }
+    // va - vb, an immovable end at rest: a's velocity itself where b does
+    // not move (a does then), else computed in w.
+    TINYPARTICLE_ALWAYS_INLINE const V& relativeVelocity(V& w) const {
+      if (!bMoves()) return movingA->velocity;
+      if (movingA != nullptr) w = movingA->velocity;
+      w -= movingB->velocity;
+      return w;
+    }
+    // The part of a change of the ends' relative speed that a takes when
+    // both move: its inverse mass over both ends'. Through the reciprocal
+    // of Math/Newton.hpp (a unit or two at most), so that a world whose
+    // step never divides elsewhere links no fast divide.
+    S shareOfA() const {
+      if (!bothMove()) return S();
+      return a->inverseMass * detail::reciprocalByMultiplies(a->inverseMass +
+                                                             b->inverseMass);
+    }
+    // A change `amount` of the ends' relative (field: velocity or
+    // position) along u: all of it to the one movable end, or `share` of
+    // it to a and the rest against u to b.
+    void pushApart(V P::*field, const V& u, S amount, S share) const {
+      S toA = amount;
+      if (bMoves()) {
+        toA = bothMove() ? amount * share : S();
+        (movingB->*field).addScaled(u, toA - amount);
+      }
+      if (movingA != nullptr) (movingA->*field).addScaled(u, toA);
+    }
+  };
+};
+
 template <class W>
 struct LoneRods {
   typedef typename W::Scalar S;
-  typedef typename W::Vec V;
-  typedef typename W::ParticleType P;
   typedef typename W::ConstraintSlot Slot;
   typedef RodSolver<W> Rods;
-  typedef typename Rods::Pass Pass;
+  typedef typename RodEquations<S, W::kDimensions>::Pass Pass;
 
   // The world's rod solve when its rods never share a particle (see the
-  // top of this file). kTwoMovable: a rod may have two movable ends (a
-  // rod between particles); without, every rod hangs from an anchor
-  // (World::anchoredRodAdded() sets this solve only then), and neither the
-  // code for two movable ends nor that for a rod between particles is
-  // linked.
-  template <bool kTwoMovable>
+  // top of this file): World::rodAdded() and anchoredRodAdded() set it.
+  // kEnds: LoneEnds::kAnchored or kTwoMovable.
+  template <uint8_t kEnds>
   static void solve(W& world, const Scaler<S>& byDt, S dt) {
     if (WorldAccess::rodState(world) & W::kRodsChanged) {
       WorldAccess::setRodState(world, W::kRodsLone);
     }
-    solveAll<kTwoMovable, !kTwoMovable>(world, byDt,
-                                        WorldAccess::inverseDt(world, dt));
+    solveAll<kEnds>(world, byDt, WorldAccess::inverseDt(world, dt));
   }
 
   // Whether rod slot `rod` may join a world solved here: its particle a is
@@ -93,160 +203,32 @@ struct LoneRods {
   }
 
   // Both solves for rods that share no particle: positions (SHAKE), the
-  // move, directions and velocities (RATTLE). kAnchored: every rod hangs
-  // from an anchor (b), and a is its moving end unless it is immovable.
-  template <bool kTwoMovable, bool kAnchored = false>
+  // move, directions and velocities (RATTLE). The world's part is only
+  // the walk over its slots: the solves are LoneRod's, shared.
+  template <uint8_t kEnds>
   static void solveAll(W& world, const Scaler<S>& byDt, S invDt) {
+    typedef LoneRod<S, W::kDimensions, kEnds> Rod;
     Pass pass(byDt, invDt);
     pass.unit = false;
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (Rods::isRodAt(world, i)) {
-        shake<kTwoMovable, kAnchored>(world, WorldAccess::constraint(world, i),
-                                      pass);
+    typename W::ParticleType* particles = &WorldAccess::particle(world, 0);
+    for (;;) {
+      for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
+        if (Rods::isRodAt(world, i)) {
+          Slot& s = WorldAccess::constraint(world, i);
+          Rod::solve(particles, s.a, s.b, Rods::linkOf(s), pass);
+        }
       }
-    }
-    // After a fast turn, unit directions (see above).
-    const bool unit = pass.turned;
-    WorldAccess::movePositions(world, byDt);
-    for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
-      if (Rods::isRodAt(world, i)) {
-        rattle<kTwoMovable, kAnchored>(world, WorldAccess::constraint(world, i),
-                                       unit);
-      }
+      if (!pass.positions) break;
+      // After a fast turn (pass.turned), unit directions (see above).
+      WorldAccess::movePositions(world, byDt);
+      pass.positions = false;
     }
   }
 
  private:
   static bool isImmovable(W& world, uint8_t p) {
-    return p >= W::kParticleCapacity || world.particleAt(p).isStatic();
-  }
-
-  // The moving end of a rod with one immovable end; fromB when that is b
-  // (the rod's direction then points away from it). A rod on an anchor
-  // moves at a.
-  template <bool kAnchored>
-  static P& movingEnd(W& world, const Slot& s, bool& fromB) {
-    P& a = world.particleAt(s.a);
-    fromB = !kAnchored && a.isStatic();
-    return fromB ? world.particleAt(s.b) : a;
-  }
-
-  // The position solve of one rod: with one immovable end, the moving
-  // end's change of speed along u. (Through the chains' rightSide() it
-  // cost 400 cycles more.) With two movable ends, the same for their
-  // relative motion, shared between them (shareBoth()).
-  template <bool kTwoMovable, bool kAnchored>
-  static void shake(W& world, const Slot& s, Pass& pass) {
-    const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
-    if (moving == 0) return;
-    const bool both = kTwoMovable && moving == 2;
-    bool fromB;
-    P& end = movingEnd<kAnchored>(world, s, fromB);  // a when both move
-    const V& u = Rods::linkOf(s).direction;
-    const V d = Rods::span(world, s);  // from b to a: the same as rattle()'s
-    const V* w = &end.velocity;
-    V relative;
-    if (both) {
-      relative = end.velocity;
-      relative -= world.particleAt(s.b).velocity;
-      w = &relative;
-    } else if (fromB) {
-      // Seen from b, the rod is -d along -u. Every product of the solve
-      // then changes sign twice or not at all, except those with the
-      // velocity: negating it instead gives the same speed and error to
-      // the bit (a product rounds symmetrically), and the change along -u
-      // is minus that along u. (Two scalars negated here rather than two
-      // vectors through Vec's operator-: 128 B less where b may move.)
-      for (uint8_t i = 0; i < V::kDimensions; ++i) relative[i] = -end.velocity[i];
-      w = &relative;
-    }
-    S error;
-    bool turning;
-    S speed = Rods::positionSpeed(d, *w, u, Rods::linkOf(s), pass, error,
-                                  turning);
-    if (turning) pass.turned = true;
-    if (both) {
-      shareBoth(world, s, speed, error);
-      return;
-    }
-    if (fromB) {
-      speed = -speed;
-      error = -error;
-    }
-    end.velocity.addScaled(u, speed);
-    if (!detail::isZero(error)) end.position.addScaled(u, error);
-  }
-
-  // The new direction, and the velocity solve: no speed along the rod.
-  template <bool kTwoMovable, bool kAnchored>
-  static void rattle(W& world, Slot& s, bool unit) {
-    const uint8_t moving = movingEnds<kTwoMovable, kAnchored>(world, s);
-    if (moving == 0) return;
-    Rods::setDirection(Rods::span(world, s), Rods::linkOf(s), unit);
-    if (kTwoMovable && moving == 2) {
-      rattleBoth(world, s);
-      return;
-    }
-    bool fromB;
-    P& end = movingEnd<kAnchored>(world, s, fromB);
-    detail::removeAlong(end.velocity, Rods::linkOf(s).direction);
-  }
-
-
-  // How many ends of the rod move: 0, 1 or 2 (at most 1 without
-  // kTwoMovable: b is an anchor, or the world's rods each have one
-  // immovable end, LoneRods::allLone()).
-  template <bool kTwoMovable, bool kAnchored>
-  static uint8_t movingEnds(W& world, const Slot& s) {
-    if (kAnchored) return uint8_t(!isImmovable(world, s.a));
-    if (!kTwoMovable) {
-      return uint8_t(!isImmovable(world, s.a) || !isImmovable(world, s.b));
-    }
-    return uint8_t(!isImmovable(world, s.a)) +
-           uint8_t(!isImmovable(world, s.b));
-  }
-
-  // A rod with two movable ends (a free dumbbell, or a world of one
-  // constraint slot whose rod joins two movable particles): the change of
-  // their relative speed is shared in the ratio of the inverse masses, a's
-  // share w_a / (w_a + w_b) and b's the rest. Out of line: rare. Through
-  // the compact reciprocal (rounded twice: a unit at most), so that a world
-  // whose step never divides elsewhere (the lever) links no fast divide.
-  static S shareOfA(const P& a, const P& b) {
-    return a.inverseMass *
-           detail::compactReciprocalOfPositive(a.inverseMass + b.inverseMass);
-  }
-  // The change `speed` of the relative speed along u, and the move
-  // `error` along it, shared between the two ends.
-  TINYPARTICLE_NOINLINE static void shareBoth(W& world, const Slot& s,
-                                              S speed, S error) {
-    P& a = world.particleAt(s.a);
-    P& b = world.particleAt(s.b);
-    const V& u = Rods::linkOf(s).direction;
-    const S share = shareOfA(a, b);
-    pushApart(a.velocity, b.velocity, u, speed, share);
-    if (!detail::isZero(error)) {
-      pushApart(a.position, b.position, u, error, share);
-    }
-  }
-  // x gets `amount` times `share` along u, y the rest against it.
-  TINYPARTICLE_NOINLINE static void pushApart(V& x, V& y, const V& u,
-                                              S amount, S share) {
-    const S toX = amount * share;
-    x.addScaled(u, toX);
-    y.addScaled(u, toX - amount);
-  }
-  // RATTLE for two moving ends: their relative speed along u, r, is taken
-  // out as a change -r shared as above (shareBoth(): a gets (-r) w, which
-  // is -(r w) to the bit, as a product rounds ties away from zero; b gets
-  // (-r) w - (-r) = r - r w; in fixed point all but r = S::lowest(),
-  // which -r saturates: a relative speed no step reaches).
-  TINYPARTICLE_NOINLINE static void rattleBoth(W& world, const Slot& s) {
-    const V& u = Rods::linkOf(s).direction;
-    V relative = world.particleAt(s.a).velocity;
-    relative -= world.particleAt(s.b).velocity;
-    const S radial = detail::dotOutOfLine(relative, u);
-    shareBoth(world, s, -radial, S());
+    return p >= W::kParticleCapacity ||
+           WorldAccess::particle(world, p).isStatic();
   }
 };
 

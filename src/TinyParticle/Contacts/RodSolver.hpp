@@ -75,9 +75,213 @@
 #include "../Math/Vec.hpp"
 #include "../Math/Zero.hpp"
 #include "../Core/Handle.hpp"
+#include "../Core/Particle.hpp"
 #include "../Core/Access.hpp"
 
 namespace tinyparticle {
+
+// The step equations of one rod, shared by the chains' solve and the lone
+// rods' (Contacts/LoneRod.hpp). A template over the scalar and dimension
+// alone: every World<S, Dim, ...> of a sketch shares one copy (issue 12).
+template <typename S, uint8_t Dim>
+struct LinkParams;
+
+template <typename S, uint8_t Dim>
+struct RodEquations {
+  typedef tinyparticle::Vec<S, Dim> V;
+  typedef Particle<S, Dim> P;
+  typedef LinkParams<S, Dim> Link;
+
+  // What a solve's pass over the rods shares.
+  struct Pass {
+    Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
+        turned(false), first(true), coupled(false), unit(true),
+        factored(false), worst() {}
+    const Scaler<S>& byDt;
+    S invDt;
+    bool positions;  // the position solve (SHAKE), or the velocities
+    bool turned;     // a rod turned by more than 1/16 rad
+    bool first;      // the first pass of the position solve
+    bool coupled;    // chains meet: passes repeat (Gauss-Seidel)
+    bool unit;       // directions are unit vectors (else d / L: Lone rods)
+    bool factored;   // the rows' factors are set for these directions
+    S worst;         // the largest correction of a length, m
+  };
+
+  // The vector from particles[b] (link.anchor for kAnchorIndex) to
+  // particles[a].
+  TINYPARTICLE_NOINLINE static V span(const P* particles, uint8_t a,
+                                      uint8_t b, const Link& link) {
+    V d = particles[a].position;
+    // (A pivot is often at the origin: zeros are skipped.)
+    detail::subtractNonZero(
+        d, b == kAnchorIndex ? link.anchor : particles[b].position);
+    return d;
+  }
+
+  // A rod's first direction. Ends that coincide have no direction: any
+  // will do (as for colliding balls), and the rod pushes them apart along
+  // it. (With none, they stayed together, unflagged: extras/stability.)
+  // Out of line: the set-up's frame stays small.
+  TINYPARTICLE_NOINLINE static void startDirection(const P* particles,
+                                                   uint8_t a, uint8_t b,
+                                                   Link& link) {
+    V& d = link.direction;
+    d = span(particles, a, b, link);
+    if (!detail::normalizeByMultiplies(d)) d.y = S(1);  // d is 0
+  }
+
+  // A rod's direction from its span d. Near its length, d / L is nearly a
+  // unit vector: with `unit`, one Newton step (1.5 - |d / L|^2 / 2) makes
+  // it one to about 1e-7; without, d / L itself (lone rods, see
+  // Contacts/LoneRod.hpp). Far off its length (just added, or moved by the
+  // sketch) d is normalised in full.
+  static void setDirection(const Vec<S, 2>& d,
+                           Link& link, bool unit) {
+    const S invL = link.inverseLength;
+    V scaled(d.x * invL, d.y * invL);
+    const S x = scaled.x, y = scaled.y;
+    if (unit) {
+      const S q = detail::dotOutOfLine(scaled, scaled);
+      if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
+        scaled *= S(1.5) - detail::half(q);
+        link.direction = scaled;
+        return;
+      }
+    } else {
+      // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
+      // 1.5 pass only lengths between 0.7 and 1.12, from which the lone
+      // rods' half-error moves converge (see Contacts/LoneRod.hpp).
+      const S ax = fabs(x), ay = fabs(y);
+      const S sum = ax + ay;
+      if (ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
+          sum > S(1 - 1.0 / 64) && sum < S(1.5)) {
+        link.direction.x = x;
+        link.direction.y = y;
+        return;
+      }
+    }
+    normalizeInto(d, link);
+  }
+  static void setDirection(const Vec<S, 3>& d,
+                           Link& link, bool unit) {
+    V scaled = d * link.inverseLength;
+    const S q = scaled.magnitudeSquared();
+    if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
+      if (unit) scaled *= S(1.5) - detail::half(q);
+      link.direction = scaled;
+    } else {
+      normalizeInto(d, link);
+    }
+  }
+  // By multiplies (Math/Newton.hpp), as start() normalises: one unit
+  // vector routine linked, and none that takes a square root or divides.
+  static void normalizeInto(V d, Link& link) {
+    if (detail::normalizeByMultiplies(d)) link.direction = d;
+    // else the ends coincide: keep the old direction
+  }
+
+  // A rod seen along its direction u: the relative speed along u, the
+  // span along u, and the square of the speed across u, (d - a u) / dt +
+  // (w - r u) (in 2D by the dot kernel, detail::dotOutOfLine(): through
+  // Vec operations that return vectors the lever's step cost 800 cycles
+  // more; the kernel costs none measurable and saves code).
+  struct Frame {
+    S radial;   // w . u
+    S along;    // d . u
+    S across2;  // |(d - a u) / dt + (w - r u)|^2
+  };
+  TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 2>& d,
+                                                 const Vec<S, 2>& w,
+                                                 const Vec<S, 2>& u, S invDt,
+                                                 Frame& f) {
+    f.radial = detail::dotOutOfLine(w, u);
+    f.along = detail::dotOutOfLine(d, u);
+    // Across u: along its normal n = (-u.y, u.x), one kernel for all four
+    // (n . d is u x d to the bit: a product rounds symmetrically). The
+    // offset across u is rounding (the direction was set from this span)
+    // unless something moved an end since: mostly zero.
+    const V n(-u.y, u.x);
+    const S offset = detail::dotOutOfLine(n, d);
+    S across = detail::dotOutOfLine(n, w);
+    if (!detail::isZero(offset)) across += offset * invDt;
+    f.across2 = across * across;
+  }
+  TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 3>& d,
+                                                 const Vec<S, 3>& w,
+                                                 const Vec<S, 3>& u, S invDt,
+                                                 Frame& f) {
+    f.radial = dot(w, u);
+    f.along = dot(d, u);
+    V q = d;
+    q.addScaled(u, -f.along);
+    q *= invDt;
+    q += w;
+    q.addScaled(u, -f.radial);
+    f.across2 = q.magnitudeSquared();
+  }
+
+  // The speed along u that brings a rod to its length at the end of the
+  // step. The positions have not moved yet (they move once, after this
+  // solve, rounded once): the rod at the end of the step is predicted as
+  // d + dt (w + speed u), d from b to a now and w their relative velocity.
+  // With a = d.u, r = w.u and s the speed across u, (d - a u) / dt +
+  // (w - r u), its length is L when
+  //   speed = (L - a) / dt - r - dt s^2 / (L + sqrt(L^2 - (dt s)^2)),
+  // to second order in the turn dt s / L
+  //   speed = (L - a) / dt - r - dt s^2 / 2L.
+  // Everything is a speed: in fixed point the drop dt s^2 / 2L, a fraction
+  // of a unit at 1 kHz, keeps its precision.
+  //
+  // A rod that turns by less than 1/16 rad in the step takes the second
+  // order form, and its error now, L - a (rounding of earlier steps, or
+  // what the passes before left), is returned in `error` and mended by
+  // moving the ends alone: mended through the speed, as (L - a) / dt, a
+  // unit of rounding would be a large speed along the rod, and the
+  // velocity solve would leave a little of it across the rod every step
+  // (Q16.16 pendulums gained a few % a minute that way), and rods that
+  // cannot all be held (a loop of impossible lengths) would pump speed
+  // into the world. A rod that turns faster takes the exact form, error
+  // included (`error` becomes 0); a fast rod that is off its length by
+  // more than L/16 is not one that turns but one that the others keep
+  // from its length (or that the sketch moved): position only.
+  //
+  // The exact form's drop, dt s^2 / (L + sqrt(L^2 - (dt s)^2)), is
+  // (dt s^2 / 2L) detail::turnDropFactor(h), h = (dt s / L)^2 / 2 the half
+  // square of the turn that decides `turning`: no division, no square root.
+  static S positionSpeed(const V& d, const V& w, const V& u,
+                         const Link& link,
+                         const Pass& pass, S& error, bool& turning) {
+    const Scaler<S>& byDt = pass.byDt;
+    const S invDt = pass.invDt;
+    Frame f;
+    frameOf(d, w, u, invDt, f);
+    const S length = link.length;
+    const S invL = link.inverseLength;
+    error = length - f.along;
+    if (!pass.unit) error = detail::half(error);  // u = d / L: Lone rods
+    const S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
+    const S halfTurn2 = byDt(drop) * invL;  // (dt s / L)^2 / 2
+    turning = halfTurn2 > S(1.0 / 512);
+    if (!turning) return -f.radial - drop;
+    // Far off: the offset across u is a move too, not a turn.
+    if (!(fabs(error) * invL < S(1.0 / 16))) return -f.radial;
+    const S speed =
+        error * invDt - f.radial - drop * detail::turnDropFactor(halfTurn2);
+    error = S();
+    return speed;
+  }
+
+};
+
+// Which ends of a world's lone rods may move, as far as the code must
+// know: kAnchored, b is always an anchor (World::anchoredRodAdded());
+// kOneMovable, one end of each rod is immovable, a or b (what the chains'
+// solve hands over, LoneRods::allLone()); kTwoMovable, any (a world of one
+// constraint slot whose rod joins two particles, World::rodAdded()).
+struct LoneEnds {
+  enum : uint8_t { kAnchored, kOneMovable, kTwoMovable };
+};
 
 template <class W>
 struct LoneRods;
@@ -89,6 +293,8 @@ struct RodSolver {
   typedef typename W::ParticleType P;
   typedef typename W::ConstraintSlot Slot;
   typedef typename W::LinkParamsType Link;  // a rod's parameters
+  typedef RodEquations<S, W::kDimensions> Eq;  // shared by every W
+  typedef typename Eq::Pass Pass;
 
   static Link& linkOf(Slot& s) { return s.params.template as<Link>(); }
   static const Link& linkOf(const Slot& s) {
@@ -105,19 +311,14 @@ struct RodSolver {
   static void generate(W&, Slot&, uint8_t) {}
 
   // A rod just added: its length's inverse and its first direction. False
-  // (nothing set) for a length that is not positive. The compact
-  // reciprocal and Newton's unit vector (Math/Newton.hpp): a world whose
-  // step never divides links no fast divide.
+  // (nothing set) for a length that is not positive. Newton's reciprocal
+  // and unit vector (Math/Newton.hpp): a world whose step never divides
+  // links no fast divide (nor, in float, the float divide).
   static bool start(W& world, Slot& s) {
     typename W::LinkParamsType& link = linkOf(s);
     if (!(link.length > S())) return false;
-    link.inverseLength = detail::compactReciprocalOfPositive(link.length);
-    V d = span(world, s);
-    // Ends that coincide have no direction: any will do (as for colliding
-    // balls), and the rod pushes them apart along it. (With none, they
-    // stayed together, unflagged: extras/stability.)
-    if (!detail::normalizeByMultiplies(d)) d.y = S(1);
-    link.direction = d;
+    link.inverseLength = detail::reciprocalByMultiplies(link.length);
+    Eq::startDirection(&world.particleAt(0), s.a, s.b, link);
     link.next = link.prev = kNoIndex;
     return true;
   }
@@ -128,7 +329,8 @@ struct RodSolver {
     const S invDt = WorldAccess::inverseDt(world, dt);
     if ((WorldAccess::rodState(world) & W::kRodsLone) &&
         LoneRods<W>::allLone(world)) {
-      LoneRods<W>::template solveAll<false>(world, byDt, invDt);
+      LoneRods<W>::template solveAll<LoneEnds::kOneMovable>(world, byDt,
+                                                             invDt);
       return;
     }
     step(world, byDt, invDt, true);
@@ -241,7 +443,7 @@ struct RodSolver {
   }
 
  private:
-  friend struct LoneRods<W>;  // shares the step equations and Pass
+  friend struct LoneRods<W>;  // reads the rod slots (isRodAt(), otherRod())
 
   // Saves every particle's velocity in `saved`, or with `back` puts it
   // back (a step undone).
@@ -297,21 +499,6 @@ struct RodSolver {
     }
     return true;
   }
-
-  struct Pass {
-    Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
-        turned(false), first(true), coupled(false), unit(true),
-        factored(false), worst() {}
-    const Scaler<S>& byDt;
-    S invDt;
-    bool positions;  // the position solve (SHAKE), or the velocities
-    bool turned;     // a rod turned by more than 1/16 rad
-    bool first;      // the first pass of the position solve
-    bool coupled;    // chains meet: passes repeat (Gauss-Seidel)
-    bool unit;       // directions are unit vectors (else d / L: Lone rods)
-    bool factored;   // the rows' factors are set for these directions
-    S worst;         // the largest correction of a length, m
-  };
 
   static bool isRodAt(W& world, uint8_t i) {
     return WorldAccess::isRod(world, WorldAccess::constraint(world, i));
@@ -420,13 +607,8 @@ struct RodSolver {
   // ---- The solves ---------------------------------------------------------
 
   // The vector from b to a.
-  static V span(W& world, const Slot& s) {
-    V d = world.particleAt(s.a).position;
-    // (A pivot is often at the origin: zeros are skipped.)
-    detail::subtractNonZero(d, s.b == kAnchorIndex
-                                   ? linkOf(s).anchor
-                                   : world.particleAt(s.b).position);
-    return d;
+  TINYPARTICLE_NOINLINE static V span(W& world, const Slot& s) {
+    return Eq::span(&world.particleAt(0), s.a, s.b, linkOf(s));
   }
 
   // va - vb (b at rest when it is an anchor or fixed).
@@ -443,59 +625,9 @@ struct RodSolver {
     for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {
       if (!isRodAt(world, i)) continue;
       Slot& s = WorldAccess::constraint(world, i);
-      setDirection(span(world, s), linkOf(s), true);
+      Eq::setDirection(span(world, s), linkOf(s), true);
     }
   }
-  // A rod's direction from its span d. Near its length, d / L is nearly a
-  // unit vector: with `unit`, one Newton step (1.5 - |d / L|^2 / 2) makes
-  // it one to about 1e-7; without, d / L itself (lone rods, see
-  // Contacts/LoneRod.hpp). Far off its length (just added, or moved by the
-  // sketch) d is normalised in full.
-  static void setDirection(const Vec<S, 2>& d,
-                           typename W::LinkParamsType& link, bool unit) {
-    const S invL = link.inverseLength;
-    V scaled(d.x * invL, d.y * invL);
-    const S x = scaled.x, y = scaled.y;
-    if (unit) {
-      const S q = detail::dotOutOfLine(scaled, scaled);
-      if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
-        scaled *= S(1.5) - detail::half(q);
-        link.direction = scaled;
-        return;
-      }
-    } else {
-      // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
-      // 1.5 pass only lengths between 0.7 and 1.12, from which the lone
-      // rods' half-error moves converge (see Contacts/LoneRod.hpp).
-      const S ax = fabs(x), ay = fabs(y);
-      const S sum = ax + ay;
-      if (ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
-          sum > S(1 - 1.0 / 64) && sum < S(1.5)) {
-        link.direction.x = x;
-        link.direction.y = y;
-        return;
-      }
-    }
-    normalizeInto(d, link);
-  }
-  static void setDirection(const Vec<S, 3>& d,
-                           typename W::LinkParamsType& link, bool unit) {
-    V scaled = d * link.inverseLength;
-    const S q = scaled.magnitudeSquared();
-    if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
-      if (unit) scaled *= S(1.5) - detail::half(q);
-      link.direction = scaled;
-    } else {
-      normalizeInto(d, link);
-    }
-  }
-  // By multiplies (Math/Newton.hpp), as start() normalises: one unit
-  // vector routine linked, and none that takes a square root or divides.
-  static void normalizeInto(V d, typename W::LinkParamsType& link) {
-    if (detail::normalizeByMultiplies(d)) link.direction = d;
-    // else the ends coincide: keep the old direction
-  }
-
   // The right side of rod s's row: for the velocity solve, minus the
   // stretching speed; for the position solve, positionSpeed(), the speed
   // along u that brings the rod to its length at the end of the step, and
@@ -505,8 +637,8 @@ struct RodSolver {
     const V w = relativeVelocity(world, s);
     if (!pass.positions) return -dot(w, u);
     bool turning;
-    S right = positionSpeed(span(world, s), w, u, linkOf(s), pass, error,
-                            turning);
+    S right = Eq::positionSpeed(span(world, s), w, u, linkOf(s), pass,
+                                error, turning);
     if (turning && detail::isZero(error)) pass.turned = true;
     if (!pass.first && !turning && !pass.coupled) {
       // Along a chain, what a further pass finds is the motion that a
@@ -519,97 +651,6 @@ struct RodSolver {
       if (correction > pass.worst) pass.worst = correction;
     }
     return right;
-  }
-
-  // A rod seen along its direction u: the relative speed along u, the
-  // span along u, and the square of the speed across u, (d - a u) / dt +
-  // (w - r u) (in 2D by the dot kernel, detail::dotOutOfLine(): through
-  // Vec operations that return vectors the lever's step cost 800 cycles
-  // more; the kernel costs none measurable and saves code).
-  struct Frame {
-    S radial;   // w . u
-    S along;    // d . u
-    S across2;  // |(d - a u) / dt + (w - r u)|^2
-  };
-  TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 2>& d,
-                                                 const Vec<S, 2>& w,
-                                                 const Vec<S, 2>& u, S invDt,
-                                                 Frame& f) {
-    f.radial = detail::dotOutOfLine(w, u);
-    f.along = detail::dotOutOfLine(d, u);
-    // Across u: along its normal n = (-u.y, u.x), one kernel for all four
-    // (n . d is u x d to the bit: a product rounds symmetrically). The
-    // offset across u is rounding (the direction was set from this span)
-    // unless something moved an end since: mostly zero.
-    const V n(-u.y, u.x);
-    const S offset = detail::dotOutOfLine(n, d);
-    S across = detail::dotOutOfLine(n, w);
-    if (!detail::isZero(offset)) across += offset * invDt;
-    f.across2 = across * across;
-  }
-  TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 3>& d,
-                                                 const Vec<S, 3>& w,
-                                                 const Vec<S, 3>& u, S invDt,
-                                                 Frame& f) {
-    f.radial = dot(w, u);
-    f.along = dot(d, u);
-    V q = d;
-    q.addScaled(u, -f.along);
-    q *= invDt;
-    q += w;
-    q.addScaled(u, -f.radial);
-    f.across2 = q.magnitudeSquared();
-  }
-
-  // The speed along u that brings a rod to its length at the end of the
-  // step. The positions have not moved yet (they move once, after this
-  // solve, rounded once): the rod at the end of the step is predicted as
-  // d + dt (w + speed u), d from b to a now and w their relative velocity.
-  // With a = d.u, r = w.u and s the speed across u, (d - a u) / dt +
-  // (w - r u), its length is L when
-  //   speed = (L - a) / dt - r - dt s^2 / (L + sqrt(L^2 - (dt s)^2)),
-  // to second order in the turn dt s / L
-  //   speed = (L - a) / dt - r - dt s^2 / 2L.
-  // Everything is a speed: in fixed point the drop dt s^2 / 2L, a fraction
-  // of a unit at 1 kHz, keeps its precision.
-  //
-  // A rod that turns by less than 1/16 rad in the step takes the second
-  // order form, and its error now, L - a (rounding of earlier steps, or
-  // what the passes before left), is returned in `error` and mended by
-  // moving the ends alone: mended through the speed, as (L - a) / dt, a
-  // unit of rounding would be a large speed along the rod, and the
-  // velocity solve would leave a little of it across the rod every step
-  // (Q16.16 pendulums gained a few % a minute that way), and rods that
-  // cannot all be held (a loop of impossible lengths) would pump speed
-  // into the world. A rod that turns faster takes the exact form, error
-  // included (`error` becomes 0); a fast rod that is off its length by
-  // more than L/16 is not one that turns but one that the others keep
-  // from its length (or that the sketch moved): position only.
-  //
-  // The exact form's drop, dt s^2 / (L + sqrt(L^2 - (dt s)^2)), is
-  // (dt s^2 / 2L) detail::turnDropFactor(h), h = (dt s / L)^2 / 2 the half
-  // square of the turn that decides `turning`: no division, no square root.
-  static S positionSpeed(const V& d, const V& w, const V& u,
-                         const typename W::LinkParamsType& link,
-                         const Pass& pass, S& error, bool& turning) {
-    const Scaler<S>& byDt = pass.byDt;
-    const S invDt = pass.invDt;
-    Frame f;
-    frameOf(d, w, u, invDt, f);
-    const S length = link.length;
-    const S invL = link.inverseLength;
-    error = length - f.along;
-    if (!pass.unit) error = detail::half(error);  // u = d / L: Lone rods
-    const S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
-    const S halfTurn2 = byDt(drop) * invL;  // (dt s / L)^2 / 2
-    turning = halfTurn2 > S(1.0 / 512);
-    if (!turning) return -f.radial - drop;
-    // Far off: the offset across u is a move too, not a turn.
-    if (!(fabs(error) * invL < S(1.0 / 16))) return -f.radial;
-    const S speed =
-        error * invDt - f.radial - drop * detail::turnDropFactor(halfTurn2);
-    error = S();
-    return speed;
   }
 
   // Applies rod s's impulse mu (per unit mass along u) to the velocities.

@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "../Math/Fixed.hpp"
+#include "../Math/Newton.hpp"
 
 namespace tinyparticle {
 namespace detail {
@@ -19,12 +19,13 @@ struct RodState {
   void addRodBits(uint8_t bits) { mRodBits |= bits; }
   Solve rodSolver() const { return mSolveRods; }
   void setRodSolver(Solve solve) { mSolveRods = solve; }
-  // 1 / dt, computed again only when dt changes: rarely, so the compact
-  // reciprocal (Math/Fixed.hpp) does it. dt > 0: the step refuses others.
+  // 1 / dt, computed again only when dt changes: rarely, so a reciprocal
+  // without the fast divide does it (Math/Newton.hpp). dt > 0: the step
+  // refuses others.
   S inverseOf(S dt) {
     if (!(dt == mDt)) {
       mDt = dt;
-      mInverseDt = detail::compactReciprocalOfPositive(dt);
+      mInverseDt = detail::reciprocalByMultiplies(dt);
     }
     return mInverseDt;
   }
@@ -44,7 +45,7 @@ struct RodState<Solve, S, false> {
   void addRodBits(uint8_t) {}
   Solve rodSolver() const { return nullptr; }
   void setRodSolver(Solve) {}
-  S inverseOf(S dt) { return detail::compactReciprocalOfPositive(dt); }
+  S inverseOf(S dt) { return detail::reciprocalByMultiplies(dt); }
 };
 
 }  // namespace detail

@@ -987,9 +987,10 @@ class World
   // world has one constraint slot (one rod: lone, Contacts/LoneRod.hpp).
   ConstraintId rodAdded(ConstraintId id) {
     if (!startRod(id)) return ConstraintId();
-    RodStore::setRodSolver(kConstraints == 1
-                               ? &LoneRods<World>::template solve<true>
-                               : &RodSolver<World>::solve);
+    RodStore::setRodSolver(
+        kConstraints == 1
+            ? &LoneRods<World>::template solve<LoneEnds::kTwoMovable>
+            : &RodSolver<World>::solve);
     return id;
   }
   // The same for a rod from a particle to an anchor. A world whose rods all
@@ -999,7 +1000,8 @@ class World
   // chains' solve, which solves any rods.
   ConstraintId anchoredRodAdded(ConstraintId id) {
     if (!startRod(id)) return ConstraintId();
-    const RodSolve lone = &LoneRods<World>::template solve<false>;
+    const RodSolve lone =
+        &LoneRods<World>::template solve<LoneEnds::kAnchored>;
     const RodSolve current = RodStore::rodSolver();
     if (current == nullptr) {
       RodStore::setRodSolver(lone);
