@@ -285,15 +285,16 @@ struct Resolver {
     // without a division when one side is immovable or the masses are equal.
     // (Two different masses take the compact reciprocal: slower than the
     // fast divide, but small, and set-up links it anyway for the inverse
-    // masses; a step that never divides then links no fast divide.)
+    // masses; a step that never divides then links no fast divide. Both
+    // move, so both inverse masses are positive, and so is their sum.)
     S shareA = S(1);
     if (!movesA) {
       shareA = S();
     } else if (movesB) {
       shareA = a.inverseMass == b->inverseMass
                    ? S(0.5)
-                   : a.inverseMass *
-                         detail::compactReciprocal(a.inverseMass + b->inverseMass);
+                   : a.inverseMass * detail::compactReciprocalOfPositive(
+                                         a.inverseMass + b->inverseMass);
     }
 
     // 1. Velocity.

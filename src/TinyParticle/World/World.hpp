@@ -78,7 +78,7 @@ class World
           S, (kConstraints > 0)>,
       private detail::SleepState<
           bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
-                   S),
+                   const Scaler<S>&),
           (kConstraints > 0)>,
       // Last, so that its fields come after the pools, as members would.
       private WorldCore<S, Dim> {
@@ -112,7 +112,8 @@ class World
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
-  typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
+  typedef detail::SleepState<bool (*)(World&, const Scaler<S>&),
+                             (kConstraints > 0)>
       SleepStore;
   typedef GravityForce<S, Dim> GravityType;
   // What the force runners take in place of the world (World/Slots.hpp).
@@ -151,8 +152,9 @@ class World
       return ParticleId();
     }
     // Set-up: the compact reciprocal, so that a scene whose step never
-    // divides links no fast divide (Math/Fixed.hpp).
-    return addWithInverseMass(position, detail::compactReciprocal(mass),
+    // divides links no fast divide (Math/Fixed.hpp); mass > 0 here.
+    return addWithInverseMass(position,
+                              detail::compactReciprocalOfPositive(mass),
                               radius);
   }
 
@@ -534,15 +536,15 @@ class World
       Core::runForces(&forceAt(0), kForces, forces, dt);
     }
     TINYPARTICLE_PROFILE_END(kProfileForces);
+    // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
+    const Scaler<S> byDt(dt);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
-    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, dt)) {
+    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, byDt)) {
       mContactCount = 0;
       mStats = StepStats();
       TINYPARTICLE_PROFILE_END(kProfileStep);
       return;
     }
-    // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
-    const Scaler<S> byDt(dt);
     StepScalerStore::setStepScaler(&byDt);
     // With rods, the positions move after the rods' velocity solve, so that
     // each moves once, rounded once (the solver calls movePositions()).
@@ -642,9 +644,8 @@ class World
     SleepStore::setRest(0, false);
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
-      const bool asleep = p.isAsleep();
+      if (!p.isAsleep()) continue;
       p.flags &= uint8_t(~ParticleType::kAsleep);
-      if (!asleep) continue;
       SleepStore::setWoke(true);
       // Woken by a contact: it gets the motion of this step that it
       // missed, as if it had been awake.
@@ -1078,13 +1079,17 @@ class World
 
   // The integration of this step for a particle woken after it (it was
   // asleep: no accumulated force, no velocity).
+  // (The uniform acceleration's kick, v += g dt, as a vector: a zero
+  // component adds zero exactly.)
   void catchUp(ParticleType& p) {
     const Scaler<S>& byDt = StepScalerStore::stepScaler();
     if (kForces != 0) {
       const Vec& uniform = UniformStore::uniform();
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (!detail::isZero(uniform[k])) p.velocity[k] += byDt(uniform[k]);
-      }
+      Vec kick;
+      kick.x = byDt(uniform.x);
+      kick.y = byDt(uniform.y);
+      if (Dim == 3) kick[2] = byDt(uniform[2]);
+      p.velocity += kick;
     }
     moveParticle(p, byDt);
   }
