@@ -274,7 +274,9 @@ struct Resolver {
     bool movesB = b != nullptr && !b->isStatic();
     change.movedA = change.movedB = change.velocity = false;
     // A sleeper pushed by a contact that became active here: all wake.
-    if (a.isAsleep() || (b != nullptr && b->isAsleep())) world.wakeAll();
+    if (a.isAsleep() || (b != nullptr && b->isAsleep())) {
+      WorldAccess::wakeInContacts(world);
+    }
     if (!movesA && !movesB) {
       change.touchedA = change.touchedB = false;
       contact.penetration = S();

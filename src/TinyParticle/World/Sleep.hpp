@@ -99,6 +99,19 @@ struct Sleeping {
   // asleep.
   static const uint8_t kRestSteps = 31;
 
+  // The world's sleep hook, which World::enableSleeping() stores, so that
+  // a world that never sleeps links none of this, waking included: with
+  // the step's Scaler, the look before the step (settle()); with none, a
+  // contact during the step has reached a sleeper, and all wake
+  // (World::wakeAll(): with the motion of the step they missed).
+  static bool hook(W& world, const Scaler<S>* byDt) {
+    if (byDt == nullptr) {
+      world.wakeAll();
+      return false;
+    }
+    return settle(world, *byDt);
+  }
+
   // Returns true when every movable particle sleeps: the step (byDt
   // multiplies by its dt) has nothing to do.
   static bool settle(W& world, const Scaler<S>& byDt) {

@@ -78,7 +78,7 @@ class World
           S, (kConstraints > 0)>,
       private detail::SleepState<
           bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
-                   const Scaler<S>&),
+                   const Scaler<S>*),
           (kConstraints > 0)>,
       // Last, so that its fields come after the pools, as members would.
       private WorldCore<S, Dim> {
@@ -112,7 +112,7 @@ class World
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
-  typedef detail::SleepState<bool (*)(World&, const Scaler<S>&),
+  typedef detail::SleepState<bool (*)(World&, const Scaler<S>*),
                              (kConstraints > 0)>
       SleepStore;
   typedef GravityForce<S, Dim> GravityType;
@@ -539,7 +539,7 @@ class World
     // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
     const Scaler<S> byDt(dt);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
-    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, byDt)) {
+    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, &byDt)) {
       mContactCount = 0;
       mStats = StepStats();
       TINYPARTICLE_PROFILE_END(kProfileStep);
@@ -625,7 +625,7 @@ class World
   // wakeAll(). Its code is linked only into sketches that call this.
   void enableSleeping(bool on = true) {
     if (!on) wakeAll();
-    SleepStore::setSettler(on ? &Sleeping<World>::settle : nullptr);
+    SleepStore::setSettler(on ? &Sleeping<World>::hook : nullptr);
   }
   bool isSleepingEnabled() const { return SleepStore::settler() != nullptr; }
 
@@ -1100,8 +1100,13 @@ class World
                         (b < kParticles && particleAt(b).isAsleep());
     if (asleep &&
         (penetration > contactMargin() || separating < -speedMargin())) {
-      wakeAll();
+      wakeInContacts();
     }
+  }
+  // wakeAll() for a contact during the step, through the sleep hook
+  // (Sleeping::hook()): a world that never sleeps links no waking.
+  void wakeInContacts() {
+    if (SleepStore::settler() != nullptr) SleepStore::settler()(*this, nullptr);
   }
 };
 
