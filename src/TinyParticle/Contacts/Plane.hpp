@@ -204,14 +204,17 @@ struct PlaneConstraint {
   TINYPARTICLE_NOINLINE static void touch(W& world, const Wall& wall,
                                           uint8_t i) {
     S Vec<S, Dim>::*const along = wall.along;
-    const bool positive = wall.positive;
-    const S offset = wall.offset;
     const Particle<S, Dim>& p = WorldAccess::particle(world, i);
-    const S side = positive ? p.position.*along - p.radius
-                            : p.position.*along + p.radius;
-    const S penetration = positive ? offset - side : offset + side;
-    const S velocity = p.velocity.*along;
-    const S separating = positive ? velocity : -velocity;
+    // Along the normal: the coordinate and velocity, negated for -e (the
+    // offset holds minus the bound), so that both walls take one formula:
+    // penetration = offset - (x - r) for +e, offset + (x + r) for -e.
+    S at = p.position.*along;
+    S separating = p.velocity.*along;
+    if (!wall.positive) {
+      at = -at;
+      separating = -separating;
+    }
+    const S penetration = wall.offset - (at - p.radius);
     const S acceleration =
         p.acceleration.*along + WorldAccess::uniformComponent(world, along);
     if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {

@@ -160,12 +160,13 @@ struct Resolver {
   // dot(va - vb, normal). An immovable particle counts as at rest, whatever
   // its velocity field says (it never moves).
   static S separatingVelocity(W& world, uint8_t a, uint8_t b, const V& normal) {
-    const P& pa = world.particleAt(a);
-    if (b == kNoIndex || world.particleAt(b).isStatic()) {
-      return along(pa.velocity, normal);
+    // (va - vb, then one dot with the normal: the same arithmetic as
+    // component by component, in one copy of the code.)
+    V relative = world.particleAt(a).velocity;
+    if (b != kNoIndex && !world.particleAt(b).isStatic()) {
+      relative -= world.particleAt(b).velocity;
     }
-    return detail::differenceAlongNormal(pa.velocity,
-                                         world.particleAt(b).velocity, normal);
+    return along(relative, normal);
   }
 
   // dot(v, normal) for a contact normal: the same result, without the
