@@ -2,8 +2,8 @@
 // dot(normal, position) - radius >= offset. A plane is a contact generator
 // over all particles, so its cost grows with the particle count: a plane
 // whose normal is along an axis takes the fast path, which reads one
-// coordinate instead of taking a dot product, and a box's walls share one
-// pass (generateBox()).
+// coordinate instead of taking a dot product, and a box's two walls along
+// an axis share one pass (generateBox()).
 //
 // A particle touching the plane, or within World::contactMargin() of it,
 // makes a contact too: in fixed point a slow particle may not move in a

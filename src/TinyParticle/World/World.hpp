@@ -152,9 +152,8 @@ class World
       return ParticleId();
     }
     // Set-up: the compact reciprocal, so that a scene whose step never
-    // divides links no fast divide (Math/Fixed.hpp); mass > 0 here.
-    return addWithInverseMass(position,
-                              detail::compactReciprocalOfPositive(mass),
+    // divides links no fast divide (Math/Fixed.hpp).
+    return addWithInverseMass(position, detail::compactReciprocal(mass),
                               radius);
   }
 
