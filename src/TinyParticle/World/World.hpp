@@ -538,7 +538,8 @@ class World
     // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
     const Scaler<S> byDt(dt);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
-    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, &byDt)) {
+    if (SleepStore::settler() != nullptr &&
+        SleepStore::settler()(*this, &byDt)) {
       mContactCount = 0;
       mStats = StepStats();
       TINYPARTICLE_PROFILE_END(kProfileStep);
@@ -1077,9 +1078,8 @@ class World
   }
 
   // The integration of this step for a particle woken after it (it was
-  // asleep: no accumulated force, no velocity).
-  // (The uniform acceleration's kick, v += g dt, as a vector: a zero
-  // component adds zero exactly.)
+  // asleep: no accumulated force, no velocity). The uniform acceleration's
+  // kick, v += g dt, as one vector: a zero component adds zero exactly.
   void catchUp(ParticleType& p) {
     const Scaler<S>& byDt = StepScalerStore::stepScaler();
     if (kForces != 0) {
