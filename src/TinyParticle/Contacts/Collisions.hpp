@@ -47,7 +47,7 @@
 // the sort list's), only in the steps past the limit.
 //
 // Memory: the sort order lives in a static array of one byte per particle
-// slot (plus one), linked only with this generator. Worlds of one type share
+// slot, linked only with this generator. Worlds of one type share
 // it; any starting order gives the same contacts, a shared one is only less
 // sorted. The sweep list is on the stack (5 bytes per colliding particle in
 // Q16.16 and float).
@@ -232,7 +232,7 @@ struct CollisionConstraint {
     Entry* end = entries;
     bool moved = false;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
-      const uint8_t i = order[k];
+      const uint8_t i = uint8_t(order[k] ^ k);  // (see sortOrder())
       const P& p = world.particleAt(i);
       if ((p.flags & both) != both) continue;
       const S x = p.position.x;
@@ -250,11 +250,16 @@ struct CollisionConstraint {
     // sorted, then the others (any order will do for them). When all
     // collide and none moved, it is the order already kept.
     if (count > 0 && (moved || count < W::kParticleCapacity)) {
-      uint8_t* o = order;
-      for (const Entry* e = entries; e != end; ++e) *o++ = e->index;
+      uint8_t k = 0;
+      for (const Entry* e = entries; e != end; ++e, ++k) {
+        order[k] = uint8_t(e->index ^ k);
+      }
       if (count < W::kParticleCapacity) {
         for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-          if ((world.particleAt(i).flags & both) != both) *o++ = i;
+          if ((world.particleAt(i).flags & both) != both) {
+            order[k] = uint8_t(i ^ k);
+            ++k;
+          }
         }
       }
     }
@@ -373,17 +378,14 @@ struct CollisionConstraint {
     }
   }
 
-  // The order of the particle slots by their centre's x,
-  // as of the last step: a permutation of 0 .. capacity - 1.
+  // The order of the particle slots by their centre's x, as of the last
+  // step: a permutation of 0 .. capacity - 1, entry k holding its slot
+  // XOR k, so that the zeroed array of a new sketch is the slot order
+  // 0, 1, 2... (no flag, and no loop, to set it up).
   static uint8_t* sortOrder() {
     static const uint8_t kSize =
         W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
     static uint8_t order[kSize];
-    static bool ready = false;
-    if (!ready) {
-      for (uint8_t i = 0; i < kSize; ++i) order[i] = i;
-      ready = true;
-    }
     return order;
   }
 

@@ -70,21 +70,6 @@ inline S sumAlongNormal(const Vec<S, 3>& u, const Vec<S, 3>& v,
          NormalComponent<S>::times(u.z + v.z, normal.z);
 }
 
-// dot(u - v, normal), without the vector u - v.
-template <typename S>
-inline S differenceAlongNormal(const Vec<S, 2>& u, const Vec<S, 2>& v,
-                               const Vec<S, 2>& normal) {
-  return NormalComponent<S>::times(u.x - v.x, normal.x) +
-         NormalComponent<S>::times(u.y - v.y, normal.y);
-}
-template <typename S>
-inline S differenceAlongNormal(const Vec<S, 3>& u, const Vec<S, 3>& v,
-                               const Vec<S, 3>& normal) {
-  return NormalComponent<S>::times(u.x - v.x, normal.x) +
-         NormalComponent<S>::times(u.y - v.y, normal.y) +
-         NormalComponent<S>::times(u.z - v.z, normal.z);
-}
-
 // velocity += normal * dv, move = normal * dx, position += move, likewise,
 // component by component (a vector returned by value costs copies on AVR).
 template <typename S>

@@ -160,12 +160,13 @@ struct Resolver {
   // dot(va - vb, normal). An immovable particle counts as at rest, whatever
   // its velocity field says (it never moves).
   static S separatingVelocity(W& world, uint8_t a, uint8_t b, const V& normal) {
-    const P& pa = world.particleAt(a);
-    if (b == kNoIndex || world.particleAt(b).isStatic()) {
-      return along(pa.velocity, normal);
+    // (va - vb, then one dot with the normal: the same arithmetic as
+    // component by component, in one copy of the code.)
+    V relative = world.particleAt(a).velocity;
+    if (b != kNoIndex && !world.particleAt(b).isStatic()) {
+      relative -= world.particleAt(b).velocity;
     }
-    return detail::differenceAlongNormal(pa.velocity,
-                                         world.particleAt(b).velocity, normal);
+    return along(relative, normal);
   }
 
   // dot(v, normal) for a contact normal: the same result, without the
@@ -274,7 +275,9 @@ struct Resolver {
     bool movesB = b != nullptr && !b->isStatic();
     change.movedA = change.movedB = change.velocity = false;
     // A sleeper pushed by a contact that became active here: all wake.
-    if (a.isAsleep() || (b != nullptr && b->isAsleep())) world.wakeAll();
+    if (a.isAsleep() || (b != nullptr && b->isAsleep())) {
+      WorldAccess::wakeInContacts(world);
+    }
     if (!movesA && !movesB) {
       change.touchedA = change.touchedB = false;
       contact.penetration = S();
@@ -285,15 +288,16 @@ struct Resolver {
     // without a division when one side is immovable or the masses are equal.
     // (Two different masses take the compact reciprocal: slower than the
     // fast divide, but small, and set-up links it anyway for the inverse
-    // masses; a step that never divides then links no fast divide.)
+    // masses; a step that never divides then links no fast divide. Both
+    // move, so both inverse masses are positive, and so is their sum.)
     S shareA = S(1);
     if (!movesA) {
       shareA = S();
     } else if (movesB) {
       shareA = a.inverseMass == b->inverseMass
                    ? S(0.5)
-                   : a.inverseMass *
-                         detail::compactReciprocal(a.inverseMass + b->inverseMass);
+                   : a.inverseMass * detail::compactReciprocalOfPositive(
+                                         a.inverseMass + b->inverseMass);
     }
 
     // 1. Velocity.

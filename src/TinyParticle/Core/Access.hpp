@@ -117,6 +117,11 @@ class WorldAccess {
   static void setRest(W& world, uint8_t count, bool sleepers) {
     world.setRest(count, sleepers);
   }
+  // For the resolver: a contact has pushed a sleeper; all wake.
+  template <class W>
+  static void wakeInContacts(W& world) {
+    world.wakeInContacts();
+  }
 
   // For gravity on every particle: adds to this step's uniform acceleration.
   template <class W>

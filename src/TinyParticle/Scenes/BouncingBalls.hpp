@@ -37,8 +37,8 @@ uint8_t buildBallBox(W& world, uint8_t count, uint16_t seed,
   uint8_t side = 1;
   while (side * side < count) ++side;
   // (The compact reciprocal: the same value as S(1) / x, without linking
-  // the fast divide into a sketch that may not need it.)
-  const S spacing = detail::compactReciprocal(S(int(side + 1)));
+  // the fast divide into a sketch that may not need it; of a positive x.)
+  const S spacing = detail::compactReciprocalOfPositive(S(int(side + 1)));
   SceneRandom random(seed);
   // Each velocity component is a multiple of 1/128 of 0.7 m/s (0.57 in 3D),
   // so the speed stays below 1 m/s.

@@ -99,9 +99,22 @@ struct Sleeping {
   // asleep.
   static const uint8_t kRestSteps = 31;
 
-  // Returns true when every movable particle sleeps: the step (of dt) has
-  // nothing to do.
-  static bool settle(W& world, S dt) {
+  // The world's sleep hook, which World::enableSleeping() stores, so that
+  // a world that never sleeps links none of this, waking included: with
+  // the step's Scaler, the look before the step (settle()); with none, a
+  // contact during the step has reached a sleeper, and all wake
+  // (World::wakeAll(): with the motion of the step they missed).
+  static bool hook(W& world, const Scaler<S>* byDt) {
+    if (byDt == nullptr) {
+      world.wakeAll();
+      return false;
+    }
+    return settle(world, *byDt);
+  }
+
+  // Returns true when every movable particle sleeps: the step (byDt
+  // multiplies by its dt) has nothing to do.
+  static bool settle(W& world, const Scaler<S>& byDt) {
     const S limit = W::sleepSpeed();
     // Without sleepers the first particle that moves ends the look (in a
     // busy scene, usually the first one); sleepers are all looked at, for
@@ -121,7 +134,7 @@ struct Sleeping {
       }
       awake = true;
       if (pushed ||
-          !(isSlow(p.velocity, limit) || isStuck(p.velocity, dt))) {
+          !(isSlow(p.velocity, limit) || isStuck(p.velocity, byDt))) {
         still = false;
         if (!sleepers) break;
       }
@@ -146,17 +159,15 @@ struct Sleeping {
 
  private:
   // Moved by nothing in a step: v dt rounds to zero on every axis, as the
-  // integrator rounds it (World::move()). Out of line, dt by reference:
-  // asked only of a particle faster than the sleep speed, it leaves the
-  // look's loop its registers.
+  // integrator rounds it (World::move(), with the same Scaler). Out of
+  // line: asked only of a particle faster than the sleep speed, it leaves
+  // the look's loop its registers.
   TINYPARTICLE_NOINLINE static bool isStuck(const Vec<S, 2>& v,
-                                            const S& dt) {
-    const Scaler<S> byDt(dt);
+                                            const Scaler<S>& byDt) {
     return detail::isZero(byDt(v.x)) && detail::isZero(byDt(v.y));
   }
   TINYPARTICLE_NOINLINE static bool isStuck(const Vec<S, 3>& v,
-                                            const S& dt) {
-    const Scaler<S> byDt(dt);
+                                            const Scaler<S>& byDt) {
     return detail::isZero(byDt(v.x)) && detail::isZero(byDt(v.y)) &&
            detail::isZero(byDt(v.z));
   }

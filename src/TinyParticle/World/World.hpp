@@ -78,7 +78,7 @@ class World
           S, (kConstraints > 0)>,
       private detail::SleepState<
           bool (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
-                   S),
+                   const Scaler<S>*),
           (kConstraints > 0)>,
       // Last, so that its fields come after the pools, as members would.
       private WorldCore<S, Dim> {
@@ -112,7 +112,8 @@ class World
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
-  typedef detail::SleepState<bool (*)(World&, S), (kConstraints > 0)>
+  typedef detail::SleepState<bool (*)(World&, const Scaler<S>*),
+                             (kConstraints > 0)>
       SleepStore;
   typedef GravityForce<S, Dim> GravityType;
   // What the force runners take in place of the world (World/Slots.hpp).
@@ -526,15 +527,16 @@ class World
                          UniformStore::uniformPointer(), dt)) {
       return;
     }
+    // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
+    const Scaler<S> byDt(dt);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
-    if (SleepStore::settler() != nullptr && SleepStore::settler()(*this, dt)) {
+    if (SleepStore::settler() != nullptr &&
+        SleepStore::settler()(*this, &byDt)) {
       mContactCount = 0;
       mStats = StepStats();
       TINYPARTICLE_PROFILE_END(kProfileStep);
       return;
     }
-    // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
-    const Scaler<S> byDt(dt);
     StepScalerStore::setStepScaler(&byDt);
     // With rods, the positions move after the rods' velocity solve, so that
     // each moves once, rounded once (the solver calls movePositions()).
@@ -615,7 +617,7 @@ class World
   // wakeAll(). Its code is linked only into sketches that call this.
   void enableSleeping(bool on = true) {
     if (!on) wakeAll();
-    SleepStore::setSettler(on ? &Sleeping<World>::settle : nullptr);
+    SleepStore::setSettler(on ? &Sleeping<World>::hook : nullptr);
   }
   bool isSleepingEnabled() const { return SleepStore::settler() != nullptr; }
 
@@ -634,9 +636,8 @@ class World
     SleepStore::setRest(0, false);
     for (uint8_t i = 0; i < kParticles; ++i) {
       ParticleType& p = particleAt(i);
-      const bool asleep = p.isAsleep();
+      if (!p.isAsleep()) continue;
       p.flags &= uint8_t(~ParticleType::kAsleep);
-      if (!asleep) continue;
       SleepStore::setWoke(true);
       // Woken by a contact: it gets the motion of this step that it
       // missed, as if it had been awake.
@@ -1064,14 +1065,17 @@ class World
   }
 
   // The integration of this step for a particle woken after it (it was
-  // asleep: no accumulated force, no velocity).
+  // asleep: no accumulated force, no velocity). The uniform acceleration's
+  // kick, v += g dt, as one vector: a zero component adds zero exactly.
   void catchUp(ParticleType& p) {
     const Scaler<S>& byDt = StepScalerStore::stepScaler();
     if (kForces != 0) {
       const Vec& uniform = UniformStore::uniform();
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (!detail::isZero(uniform[k])) p.velocity[k] += byDt(uniform[k]);
-      }
+      Vec kick;
+      kick.x = byDt(uniform.x);
+      kick.y = byDt(uniform.y);
+      if (Dim == 3) kick[2] = byDt(uniform[2]);
+      p.velocity += kick;
     }
     moveParticle(p, byDt);
   }
@@ -1082,8 +1086,13 @@ class World
                         (b < kParticles && particleAt(b).isAsleep());
     if (asleep &&
         (penetration > contactMargin() || separating < -speedMargin())) {
-      wakeAll();
+      wakeInContacts();
     }
+  }
+  // wakeAll() for a contact during the step, through the sleep hook
+  // (Sleeping::hook()): a world that never sleeps links no waking.
+  void wakeInContacts() {
+    if (SleepStore::settler() != nullptr) SleepStore::settler()(*this, nullptr);
   }
 };
 
