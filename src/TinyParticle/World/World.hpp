@@ -929,7 +929,8 @@ class World
     static_assert(kForces > 0,
                   "this World has no force slot: World<S, Dim, particles, "
                   "forces, constraints, contacts> needs forces > 0 for "
-                  "gravity, drag, springs, buoyancy and custom forces");
+                  "drag, springs, buoyancy, custom forces and gravity on "
+                  "one particle (the world's gravity takes no slot)");
     return Core::placeForce(&forceAt(0), kForces, a, b, generator, apply);
   }
   // ... run for particle a by the ForceRunner (b: kNoIndex, or
