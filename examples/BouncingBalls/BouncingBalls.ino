@@ -22,8 +22,8 @@
 #include <TinyParticle.h>
 #include <avr/sleep.h>
 
-// The box of balls (Scenes/BouncingBalls.hpp) in Q16.16, 2D: 16 balls, one
-// gravity slot, 4 walls and the collisions, 24 contacts (the benchmark uses
+// The box of balls (Scenes/BouncingBalls.hpp) in Q16.16, 2D: 16 balls,
+// gravity (no force slot), 4 walls and the collisions, 24 contacts (the benchmark uses
 // 32; 24 keep this sketch within the Nano's RAM with Serial's buffers).
 typedef BallsWorld<Q16_16, 2, 16, 24> BoxWorld;
 BoxWorld world;

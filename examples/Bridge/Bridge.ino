@@ -18,9 +18,9 @@
 #include <avr/sleep.h>
 
 const uint8_t kLinks = 7;  // weights between the posts
-// 2 posts + 7 weights + the ball; 1 force (gravity); 8 cables and the
-// collisions; 16 contacts.
-typedef World<Q16_16, 2, kLinks + 3, 1, kLinks + 2, 16> BridgeWorld;
+// 2 posts + 7 weights + the ball; no force slot (gravity takes none); 8
+// cables and the collisions; 16 contacts.
+typedef World<Q16_16, 2, kLinks + 3, 0, kLinks + 2, 16> BridgeWorld;
 typedef Vec2<Q16_16> Point;
 BridgeWorld world;
 

@@ -20,8 +20,9 @@
 #include <avr/sleep.h>
 
 typedef Float S;
-// 3 bodies; gravity, 3 buoyancy and 1 drag slots; the floor; 4 contacts.
-typedef World<S, 2, 3, 5, 1, 4> Tank;
+// 3 bodies; 3 buoyancy and 1 drag slots (gravity takes none); the floor;
+// 4 contacts.
+typedef World<S, 2, 3, 4, 1, 4> Tank;
 Tank world;
 
 const float kSurface = 0.5f;     // m

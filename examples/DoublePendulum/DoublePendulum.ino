@@ -20,8 +20,9 @@
 
 typedef Q16_16 S;
 typedef Vec2<S> V;
-// Pivot and two bobs; gravity; two rods (rods need no contact slot).
-typedef World<S, 2, 3, 1, 2, 0> PendulumWorld2;
+// Pivot and two bobs; gravity (no force slot); two rods (rods need no
+// contact slot).
+typedef World<S, 2, 3, 0, 2, 0> PendulumWorld2;
 PendulumWorld2 worldA, worldB;
 ParticleId lowerA, lowerB;
 

@@ -199,11 +199,12 @@ const double kPushLead = 0.0175;  // s
 
 // ---- The simulation ------------------------------------------------------
 // The lever scene (pivot, 0.1 kg end, rod, gravity, user force): 2
-// particles, 2 forces, 1 constraint; rods take no contacts. The range ends
+// particles, 1 force (the user's; gravity takes none), 1 constraint; rods
+// take no contacts. The range ends
 // are kept by the sketch (rangeEnds() below), not by two planes of the
 // engine: at 1,024 steps a second their contacts cost about 2,000 cycles a
 // step when the lever rests on one, more than the step can spare.
-typedef World<S, 2, 2, 2, 1, 0> HapticWorld;
+typedef World<S, 2, 2, 1, 1, 0> HapticWorld;
 HapticWorld world;
 LeverScene lever;
 HapticWorld::ParticleType* leverEnd;  // the end, looked up once in setup()
@@ -219,8 +220,8 @@ RealTimeLoop timing(1024, kPlotter ? 50 : 5);
 // cycles of the passes: extras/hil, "5 loop").
 // The end (radius 1 cm) is smaller than half a cell: drawn as a point, the
 // same characters without the renderer's circle code.
-// Its links are one rod: the force slots (gravity, the user's force) are
-// not looked at.
+// Its links are one rod: the force slot (the user's force) is not looked
+// at.
 AsciiRenderer<HapticWorld, 24, 12, ParticleShape::kPoints,
               LinkShape::kRodsAndCables>
     renderer(S(-0.1), S(-0.3), S(0.025), S(0.05));

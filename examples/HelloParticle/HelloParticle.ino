@@ -7,7 +7,7 @@
 #include <TinyParticle.h>
 
 typedef Q16_16 S;                // the scalar: Q16_16, Q24_8 or Float
-World<S, 2, 1, 1, 1, 1> world;   // 2D; 1 particle, 1 force, 1 plane, 1 contact
+World<S, 2, 1, 0, 1, 1> world;   // 2D; 1 particle, no force slot, 1 plane, 1 contact
 RealTimeLoop timing(256, 10);    // 256 steps (dt = 1/256 s), 10 lines a second
 ParticleId ball;
 

@@ -20,10 +20,10 @@
 #include <avr/sleep.h>
 
 typedef Q16_16 S;
-// 2D; 3 particles (pivot, ball, the magnet's marker), 3 forces (gravity,
-// the spring, the magnet), no constraint: a world without constraints
-// links no contact code, and the sketch fits a Leonardo too.
-typedef World<S, 2, 3, 3> MagnetWorld;
+// 2D; 3 particles (pivot, ball, the magnet's marker), 2 forces (the
+// spring, the magnet; gravity takes none), no constraint: a world without
+// constraints links no contact code, and the sketch fits a Leonardo too.
+typedef World<S, 2, 3, 2> MagnetWorld;
 MagnetWorld world;
 
 // An inverse-square attractor: a pull of strength / d^2 towards the pole,

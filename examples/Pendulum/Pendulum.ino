@@ -17,7 +17,7 @@
 #include <avr/sleep.h>
 
 typedef Q16_16 S;               // the scalar: Q16_16, Q24_8 or Float
-World<S, 2, 2, 1, 1, 0> world;  // 2D; 2 particles, 1 force, 1 rod, no contacts
+World<S, 2, 2, 0, 1, 0> world;  // 2D; 2 particles, no force slot, 1 rod, no contacts
 ParticleId bob;
 
 void setupPendulum() {
@@ -30,7 +30,7 @@ void setupPendulum() {
 
 // A rod and no spring: only rods and cables are drawn, and the renderer
 // links no code for the force slots.
-AsciiRenderer<World<S, 2, 2, 1, 1, 0>, 41, 12, ParticleShape::kCircles,
+AsciiRenderer<World<S, 2, 2, 0, 1, 0>, 41, 12, ParticleShape::kCircles,
               LinkShape::kRodsAndCables>
     renderer(S(-1.025), S(-1.1), S(0.05), S(0.1));
 

@@ -22,7 +22,7 @@
 
 typedef Q16_16 S;
 typedef Vec2<S> V;
-typedef World<S, 2, 1, 2> ProjectileWorld;  // 1 ball; gravity and drag
+typedef World<S, 2, 1, 1> ProjectileWorld;  // 1 ball; drag (gravity takes no slot)
 
 const float kMass = 0.1f;         // kg
 const float kDrag = 0.05f;        // N s/m

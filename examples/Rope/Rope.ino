@@ -23,8 +23,9 @@ typedef Q16_16 S;
 typedef Vec2<S> V;
 const uint8_t kBeads = 7;
 const uint8_t kLinks = kBeads + 1;
-// The posts and the beads; gravity; the links; no contacts (rods take none).
-typedef World<S, 2, kBeads + 2, 1, kLinks, 0> RopeWorld2;
+// The posts and the beads; gravity (no force slot); the links; no contacts
+// (rods take none).
+typedef World<S, 2, kBeads + 2, 0, kLinks, 0> RopeWorld2;
 RopeWorld2 world;
 ParticleId chain[kBeads + 2];  // left post, beads, right post
 ConstraintId links[kLinks];    // links[i] joins chain[i] and chain[i + 1]

@@ -35,6 +35,8 @@ template struct Vec<Fixed<2, 30>, 3>;
 // for each scalar and dimension; and the empty-pool corner (capacity 0).
 template struct Particle<Q16_16, 2>;
 template struct Particle<Float, 3>;
+template struct Particle<Q16_16, 2, false>;  // a world's without force slots
+template struct Particle<Float, 3, false>;
 template struct Contact<Q16_16, 2>;
 template class World<Q16_16, 2, 4, 4, 4, 4>;
 template class World<Q16_16, 3, 4, 4, 4, 4>;
@@ -121,7 +123,8 @@ void checkEngine() {
 }
 
 // Worlds with empty pools: every call that does not add to a missing pool
-// (those do not compile, by design: extras/checks/fail/No*Slot.cpp), so no
+// (those do not compile, by design: extras/checks/fail/No*Slot.cpp; nor
+// does applyForce() without a force slot: ApplyForceNoForceSlot.cpp), so no
 // explicit instantiation of the whole class here.
 template <typename W>
 void checkEmptyPools() {
@@ -129,7 +132,7 @@ void checkEmptyPools() {
   typename W::Vec at;
   const tinyparticle::ParticleId id = world.idOf(0);
   world.particle(id);
-  world.applyForce(id, at);
+  world.removeForce(world.addGravity(at));  // the world's: no slot
   world.removeParticle(id);
   world.removeForce(tinyparticle::ForceId());
   world.force(tinyparticle::ForceId());

@@ -233,7 +233,10 @@ class Scene {
   }
   bool keep(ForceId* kept, ForceId id) {
     if (!id.isValid()) return false;
-    if (mWorld.force(id) == nullptr) fail("new force handle does not look up");
+    // (The world's gravity has no slot to look up: World::kGravityIndex.)
+    if (id.index != W::kGravityIndex && mWorld.force(id) == nullptr) {
+      fail("new force handle does not look up");
+    }
     kept[id.index % kKept] = id;
     return true;
   }

@@ -39,7 +39,9 @@ using measuredScalar::Stored;
 #endif
 
 const uint8_t kParticles = FEATURE >= 3 ? 2 : 1;
-const uint8_t kForces = FEATURE >= 8 ? 8 : FEATURE;
+// Force slots: one per generator from rung 2 on (drag ... custom force);
+// the world's gravity takes none.
+const uint8_t kForces = FEATURE >= 8 ? 7 : FEATURE >= 2 ? FEATURE - 1 : 0;
 const uint8_t kConstraints = FEATURE >= 12   ? 3 + 2 * DIM
                              : FEATURE >= 11 ? 2 + 2 * DIM
                              : FEATURE >= 10 ? 2

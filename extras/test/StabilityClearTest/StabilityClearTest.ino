@@ -28,15 +28,19 @@ test(ClearEmptiesInPlace) {
   assertEqual((int) w.error(), 0);
   assertEqual((int) w.contactCount(), 0);
   assertTrue(w.particle(a) == nullptr && w.particle(b) == nullptr);
-  assertTrue(w.force(g) == nullptr && w.force(s) == nullptr);
+  assertTrue(w.force(s) == nullptr);
   assertTrue(w.constraint(r) == nullptr && w.constraint(floor) == nullptr);
+  // The world's gravity is off: removing it again is refused.
+  assertTrue(w.uniformAcceleration() == V());
+  assertFalse(w.removeForce(g));
+  w.clearError();
   // The same slots again: the old handles still miss.
   ParticleId c = w.addParticle(V(0.0, 1.0), Q16_16(1));
   ForceId g2 = w.addGravity();
   ConstraintId r2 = w.addPlane(V(0.0, 1.0), Q16_16(-5), Q16_16(0.5));
   assertEqual((int) c.index, (int) a.index);
   assertTrue(w.particle(a) == nullptr && w.particle(c) != nullptr);
-  assertTrue(w.force(g) == nullptr && w.force(g2) != nullptr);
+  assertTrue(g2.isValid() && w.uniformAcceleration() == W::standardGravity());
   assertTrue(w.constraint(r) == nullptr && w.constraint(r2) != nullptr);
   // A new world with the same scene, stepped alike: the same bits.
   ParticleId d = fresh.addParticle(V(0.0, 1.0), Q16_16(1));

@@ -67,13 +67,13 @@ namespace tinyparticle {
 // every rod: an immovable end (an anchor, or a particle of no inverse mass
 // at the start of the step) is an end of inverse mass 0, so that the rod of
 // a pendulum and a free dumbbell run the same code; kEnds (LoneEnds) leaves
-// out what a world's rods cannot need.
-template <typename S, uint8_t Dim, uint8_t kEnds>
+// out what a world's rods cannot need. P: the world's particle type (with
+// or without the force accumulator).
+template <typename S, uint8_t Dim, uint8_t kEnds, class P = Particle<S, Dim> >
 struct LoneRod {
   typedef RodEquations<S, Dim> Eq;
   typedef typename Eq::Pass Pass;
   typedef typename Eq::Link Link;
-  typedef typename Eq::P P;
   typedef typename Eq::V V;
   static const bool kAnchored = kEnds == LoneEnds::kAnchored;
 
@@ -207,7 +207,7 @@ struct LoneRods {
   // the walk over its slots: the solves are LoneRod's, shared.
   template <uint8_t kEnds>
   static void solveAll(W& world, const Scaler<S>& byDt, S invDt) {
-    typedef LoneRod<S, W::kDimensions, kEnds> Rod;
+    typedef LoneRod<S, W::kDimensions, kEnds, typename W::ParticleType> Rod;
     Pass pass(byDt, invDt);
     pass.unit = false;
     typename W::ParticleType* particles = &WorldAccess::particle(world, 0);

@@ -78,7 +78,7 @@ struct PlaneConstraint {
   }
 
   // Any normal: a contact from within the contact margin on.
-  bool contact(const Particle<S, Dim>& p, Vec<S, Dim>& unit,
+  bool contact(const detail::ParticleBase<S, Dim>& p, Vec<S, Dim>& unit,
                S& penetration) const {
     penetration = offset + p.radius - dot(normal, p.position);
     if (!(penetration >= -ScalarTraits<S>::depthMargin())) return false;
@@ -156,7 +156,7 @@ struct PlaneConstraint {
   static void touchAxis(W& world, uint8_t axis, uint8_t walls, S low,
                         S highOffset, uint8_t source) {
     typedef Vec<S, Dim> V;
-    typedef Particle<S, Dim> P;
+    typedef typename W::ParticleType P;
     // The coordinate as a member pointer: one load at a fixed offset per
     // particle, where v[axis] would select the component every time.
     S V::*const along = detail::AxisMember<V>::of(axis);
@@ -205,7 +205,7 @@ struct PlaneConstraint {
   TINYPARTICLE_NOINLINE static void touch(W& world, const Wall& wall,
                                           uint8_t i) {
     S Vec<S, Dim>::*const along = wall.along;
-    const Particle<S, Dim>& p = WorldAccess::particle(world, i);
+    const typename W::ParticleType& p = WorldAccess::particle(world, i);
     // Along the normal: the coordinate and velocity, negated for -e (the
     // offset holds minus the bound), so that both walls take one formula:
     // penetration = offset - (x - r) for +e, offset + (x + r) for -e.
@@ -217,7 +217,7 @@ struct PlaneConstraint {
     }
     const S penetration = wall.offset - (at - p.radius);
     const S acceleration =
-        p.acceleration.*along + WorldAccess::uniformComponent(world, along);
+        p.accumulated().*along + WorldAccess::uniformComponent(world, along);
     if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {
       return;
     }
@@ -225,8 +225,8 @@ struct PlaneConstraint {
                                separating, wall.source);
   }
 
-  static bool isTarget(const Particle<S, Dim>& p) {
-    typedef Particle<S, Dim> P;
+  static bool isTarget(const detail::ParticleBase<S, Dim>& p) {
+    typedef detail::ParticleBase<S, Dim> P;
     return (p.flags & (P::kInUse | P::kCollides | P::kStatic | P::kAsleep)) ==
            (P::kInUse | P::kCollides);
   }

@@ -89,7 +89,6 @@ struct LinkParams;
 template <typename S, uint8_t Dim>
 struct RodEquations {
   typedef tinyparticle::Vec<S, Dim> V;
-  typedef Particle<S, Dim> P;
   typedef LinkParams<S, Dim> Link;
 
   // What a solve's pass over the rods shares.
@@ -110,6 +109,8 @@ struct RodEquations {
 
   // The vector from particles[b] (link.anchor for kAnchorIndex) to
   // particles[a].
+  // (P: the world's particle type, with or without the accumulator.)
+  template <class P>
   TINYPARTICLE_NOINLINE static V span(const P* particles, uint8_t a,
                                       uint8_t b, const Link& link) {
     V d = particles[a].position;
@@ -123,6 +124,7 @@ struct RodEquations {
   // will do (as for colliding balls), and the rod pushes them apart along
   // it. (With none, they stayed together, unflagged: extras/stability.)
   // Out of line: the set-up's frame stays small.
+  template <class P>
   TINYPARTICLE_NOINLINE static void startDirection(const P* particles,
                                                    uint8_t a, uint8_t b,
                                                    Link& link) {

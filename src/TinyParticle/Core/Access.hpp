@@ -1,6 +1,6 @@
 // WorldAccess: the narrow interface through which generators and the
-// renderer reach a world's unchecked internals (slots by index, the step's
-// uniform acceleration, the contact pool). World keeps its public face to
+// renderer reach a world's unchecked internals (slots by index, the world's
+// gravity, the contact pool). World keeps its public face to
 // the sketch's calls, which check their handles; it lets this class, and no
 // one else, at the rest (the attorney idiom: a friend that forwards only
 // what its users need). Every function is a one-line forward, inlined.
@@ -121,12 +121,6 @@ class WorldAccess {
   template <class W>
   static void wakeInContacts(W& world) {
     world.wakeInContacts();
-  }
-
-  // For gravity on every particle: adds to this step's uniform acceleration.
-  template <class W>
-  static void addUniformAcceleration(W& world, const typename W::Vec& a) {
-    world.addUniformAcceleration(a);
   }
 
   // For contact generators: records a contact for this step (see

@@ -4,6 +4,12 @@
 // the pointer that World::particle() returns. 2D Q16.16 takes 36 bytes:
 // position, velocity and the acceleration accumulator (8 each), inverse mass
 // and radius (4 each), damping (2), flags and generation (1 each).
+//
+// Particle<S, Dim> is the particle of a world with force slots, and the one
+// that force generators see. A world without force slots has nothing to
+// fill an accumulator with: its particles are Particle<S, Dim, false>
+// (World::ParticleType), 8 bytes smaller in 2D Q16.16, with the same fields
+// and functions but the accumulator (accumulated() reads zero there).
 #pragma once
 
 #include <stdint.h>
@@ -15,10 +21,10 @@ namespace tinyparticle {
 namespace detail {
 template <typename S, uint8_t Dim>
 struct Damping;
-}  // namespace detail
 
+// Every field and function of a particle but the accumulator.
 template <typename S, uint8_t Dim>
-struct Particle {
+struct ParticleBase {
   typedef Vec<S, Dim> VecType;
 
   enum : uint8_t {
@@ -35,10 +41,6 @@ struct Particle {
 
   VecType position;
   VecType velocity;
-  // Acceleration accumulated by force generators (force * inverseMass)
-  // during a step; cleared at the end of the step, so a force applied
-  // between steps acts in the next one.
-  VecType acceleration;
   // 1 / mass; 0 makes the particle immovable (nothing ever moves it).
   S inverseMass;
   // For collisions and planes; also the size the renderer draws.
@@ -53,9 +55,9 @@ struct Particle {
   // Bumped when the slot is freed, so that old handles are recognised.
   uint8_t generation;
 
-  constexpr Particle()
-      : position(), velocity(), acceleration(), inverseMass(), radius(),
-        damping(0), flags(0), generation(0) {}
+  constexpr ParticleBase()
+      : position(), velocity(), inverseMass(), radius(), damping(0), flags(0),
+        generation(0) {}
 
   bool inUse() const { return (flags & kInUse) != 0; }
   bool collides() const { return (flags & kCollides) != 0; }
@@ -88,10 +90,53 @@ struct Particle {
     if (damping != 0) detail::Damping<S, Dim>::on();
   }
   S dampingRate() const { return S(long(damping)) * S(1.0 / 256); }
+};
+
+}  // namespace detail
+
+template <typename S, uint8_t Dim, bool kAccumulates = true>
+struct Particle : detail::ParticleBase<S, Dim> {
+  typedef Vec<S, Dim> VecType;
+  static const bool kHasAccumulator = true;
+
+  // Acceleration accumulated by force generators (force * inverseMass)
+  // during a step; cleared at the end of the step, so a force applied
+  // between steps acts in the next one.
+  VecType acceleration;
+
+  constexpr Particle() : detail::ParticleBase<S, Dim>(), acceleration() {}
+
+  // The accumulator, for code that serves both kinds of particle.
+  const VecType& accumulated() const { return acceleration; }
+  void clearAccumulated() { acceleration = VecType(); }
 
   // Adds a force for the current step (as acceleration: force * 1/mass).
   void addForce(const VecType& force) {
-    acceleration.addScaled(force, inverseMass);
+    acceleration.addScaled(force, this->inverseMass);
+  }
+};
+
+// The particle of a world without force slots: no accumulator, so its
+// acceleration is the world's gravity alone.
+template <typename S, uint8_t Dim>
+struct Particle<S, Dim, false> : detail::ParticleBase<S, Dim> {
+  typedef Vec<S, Dim> VecType;
+  static const bool kHasAccumulator = false;
+
+  constexpr Particle() : detail::ParticleBase<S, Dim>() {}
+
+  // A constant zero: the step's and the contacts' reads of it fold away.
+  VecType accumulated() const { return VecType(); }
+  void clearAccumulated() {}
+
+  // (A template, so that the assert fires only where it is called.)
+  template <bool kCalled = true>
+  void addForce(const VecType&) {
+    static_assert(!kCalled,
+                  "this World has no force slot, so its particles keep no "
+                  "force accumulator: World<S, Dim, particles, forces, "
+                  "constraints, contacts> needs forces > 0 for applyForce() "
+                  "and addForce()");
   }
 };
 
@@ -103,11 +148,11 @@ namespace detail {
 // multiplies (250 bytes of the lever scene's step). `unit` is dt / 256.
 template <typename S, uint8_t Dim>
 struct Damping {
-  typedef void (*Apply)(Particle<S, Dim>& p, S unit);
+  typedef void (*Apply)(ParticleBase<S, Dim>& p, S unit);
   static Apply sApply;  // null until a particle is damped
 
   static void on() { sApply = &apply; }
-  static void apply(Particle<S, Dim>& p, S unit) {
+  static void apply(ParticleBase<S, Dim>& p, S unit) {
     S loss = S(long(p.damping)) * unit;
     if (loss >= S(1)) {
       p.velocity = Vec<S, Dim>();

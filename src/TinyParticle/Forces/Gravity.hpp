@@ -1,9 +1,8 @@
-// Gravity: adds a constant acceleration to one particle or to all of them.
-// It never needs a mass or a division: the acceleration goes straight into
-// the accumulator. One slot serves every particle of the world, and then it
-// touches no particle at all: it hands the acceleration to the world, which
-// adds (g dt, computed once per step) to every velocity while it integrates,
-// and counts it wherever the resolver looks at a particle's acceleration.
+// Gravity on one particle (World::addGravity(id, multiplier)): a force slot
+// that adds a constant acceleration to that particle's accumulator. It never
+// needs a mass or a division. Gravity on every particle is no generator: it
+// is the world's (World::addGravity()), which adds g dt, computed once per
+// step, to every velocity while it integrates.
 #pragma once
 
 #include <stdint.h>
@@ -15,8 +14,7 @@
 
 namespace tinyparticle {
 
-// A generator class (Core/Generator.hpp) with a runner of its own (run()):
-// for every particle it touches none.
+// A generator class (Core/Generator.hpp) with a runner of its own (runOn()).
 template <typename S, uint8_t Dim>
 struct GravityForce {
   static const uint8_t kShape = SlotShape::kNone;
@@ -38,15 +36,8 @@ struct GravityForce {
     }
   }
 
-  // Two runners, so that a sketch links only the one it uses: gravity on
-  // every particle (runUniform(), World::addGravity()) hands the
-  // acceleration to the world; gravity on one particle (runOn()) adds it to
-  // that particle's accumulator.
-  template <class W>
-  static void runUniform(W& world, typename W::ForceSlot& slot, S) {
-    WorldAccess::addUniformAcceleration(
-        world, InSlot::of<GravityForce>(slot).acceleration);
-  }
+  // Its runner: the acceleration into the particle's accumulator (an
+  // immovable particle gets none).
   template <class W>
   static void runOn(W& world, typename W::ForceSlot& slot, S dt) {
     Particle<S, Dim>& p = WorldAccess::particle(world, slot.a);

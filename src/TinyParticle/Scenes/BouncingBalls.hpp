@@ -5,7 +5,7 @@
 // on (World::enableSleeping()): once the balls have settled into a pile,
 // a step costs little until something disturbs them.
 //
-//   BallsWorld<Q16_16, 2, 16> world;  // N particles, 1 force, the box +
+//   BallsWorld<Q16_16, 2, 16> world;  // N particles, no force slot, the box +
 //   buildBouncingBalls(world, 16);    // collisions, 32 contacts
 #pragma once
 
@@ -18,7 +18,7 @@
 namespace tinyparticle {
 
 template <typename S, uint8_t Dim, uint8_t kBalls, uint8_t kContacts = 32>
-using BallsWorld = World<S, Dim, kBalls, 1, 2, kContacts>;
+using BallsWorld = World<S, Dim, kBalls, 0, 2, kContacts>;
 
 namespace detail {
 // The box, the balls on their grid with their velocities; gravity or not.

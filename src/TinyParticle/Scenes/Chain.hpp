@@ -7,7 +7,7 @@
 //   E_fall = m g 0.125 N (N + 1) / 2,
 // the energy its errors are measured in.
 //
-//   ChainWorld<Q16_16, 2, 8> world;   // 9 particles, 1 force, 8 rods
+//   ChainWorld<Q16_16, 2, 8> world;   // 9 particles, 8 rods
 //   ChainScene chain = buildChain(world, 8);
 //
 // The rope: two posts fixed at (0, 0) and (0.6, 0), seven beads of 0.05 kg
@@ -16,7 +16,7 @@
 // keeps every link at 0.1 m), gravity on all and a damping rate of 1/s on
 // each bead, so it settles into the discrete catenary (extras/test/RopeTest).
 //
-//   RopeWorld<Q16_16, 2> world;       // 9 particles, 1 force, 8 rods
+//   RopeWorld<Q16_16, 2> world;       // 9 particles, 8 rods
 //   RopeScene rope = buildRope(world);
 #pragma once
 
@@ -29,7 +29,7 @@ namespace tinyparticle {
 
 // N beads and the pivot; one gravity slot serves every bead; no contacts.
 template <typename S, uint8_t Dim, uint8_t N>
-using ChainWorld = World<S, Dim, N + 1, 1, N, 0>;
+using ChainWorld = World<S, Dim, N + 1, 0, N, 0>;
 
 struct ChainScene {
   ParticleId pivot;
@@ -69,7 +69,7 @@ struct RopeShape {
 };
 
 template <typename S, uint8_t Dim>
-using RopeWorld = World<S, Dim, RopeShape::kBeads + 2, 1, RopeShape::kLinks, 0>;
+using RopeWorld = World<S, Dim, RopeShape::kBeads + 2, 0, RopeShape::kLinks, 0>;
 
 struct RopeScene {
   ParticleId left;   // the post at (0, 0)

@@ -19,7 +19,7 @@
 namespace tinyparticle {
 
 template <typename S>
-using CradleWorld = World<S, 2, 5, 1, 6, 8>;
+using CradleWorld = World<S, 2, 5, 0, 6, 8>;
 
 // Adds the balls (slots 0 to 4, from the raised one), their rods, gravity
 // and collisions; returns the number of balls added.

@@ -2,7 +2,7 @@
 // origin, a 0.1 kg rod end at (length, 0), a rod between them, gravity on the
 // rod end, and a custom force through which the user pushes it.
 //
-//   LeverWorld<Q16_16, 2> world;   // 2 particles, 2 forces, 1 rod
+//   LeverWorld<Q16_16, 2> world;   // 2 particles, 1 force, 1 rod
 //   Vec2<Q16_16> push;             // the user's force, N (zero: it falls)
 //   LeverScene lever = buildLever(world, &push);
 #pragma once
@@ -17,7 +17,7 @@ namespace tinyparticle {
 // No contact slot: rods take none, and a world without one links no
 // resolver.
 template <typename S, uint8_t Dim>
-using LeverWorld = World<S, Dim, 2, 2, 1, 0>;
+using LeverWorld = World<S, Dim, 2, 1, 1, 0>;
 
 struct LeverScene {
   ParticleId pivot;

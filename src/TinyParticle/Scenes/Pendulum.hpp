@@ -14,7 +14,7 @@ namespace tinyparticle {
 // 2 particles, gravity, the rod; no contact slot: rods take none, and a
 // world without one links no resolver.
 template <typename S, uint8_t Dim>
-using PendulumWorld = World<S, Dim, 2, 1, 1, 0>;
+using PendulumWorld = World<S, Dim, 2, 0, 1, 0>;
 
 struct PendulumScene {
   ParticleId pivot;

@@ -444,8 +444,12 @@ struct StabilityCases {
     }
     if (w.addParticle(V(), S(1)).isValid() || !(w.error() & WorldError::kParticlesFull)) ++wrong;
     if (w.particleCount() != 4) ++wrong;
+    // The world's gravity takes no slot; gravity on one ball (times 0: no
+    // pull) fills the one force slot.
     if (!w.addGravity().isValid()) ++wrong;
-    if (w.addGravity().isValid() || !(w.error() & WorldError::kForcesFull)) ++wrong;
+    const ParticleId first = w.idOf(0);
+    if (!w.addGravity(first, S(0)).isValid()) ++wrong;
+    if (w.addGravity(first, S(0)).isValid() || !(w.error() & WorldError::kForcesFull)) ++wrong;
     if (!w.addPlane(V(0.0, 1.0), S(0), S(0.5)).isValid()) ++wrong;
     if (!w.addCollisions(S(0.5)).isValid()) ++wrong;
     if (w.addPlane(V(1.0, 0.0), S(0), S(0.5)).isValid() ||

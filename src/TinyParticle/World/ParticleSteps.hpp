@@ -51,9 +51,11 @@ struct AddTo<Fixed<I, F> > {
   }
 };
 
-template <typename S, uint8_t Dim>
+// kAccumulates: the pool's particles keep a force accumulator (a world
+// with force slots); without one, the accumulator's terms fold away.
+template <typename S, uint8_t Dim, bool kAccumulates = true>
 struct ParticleSteps {
-  typedef Particle<S, Dim> P;
+  typedef Particle<S, Dim, kAccumulates> P;
   typedef Vec<S, Dim> V;
 
   // In use and movable: what the integrator steps.
@@ -78,10 +80,10 @@ struct ParticleSteps {
       if (!isMoving(p)) continue;
       // One axis at a time, written out: a loop over the axes would select
       // the component at every access.
-      accelerate(p.velocity.x, p.acceleration.x, uniformStep.x, byDt);
-      accelerate(p.velocity.y, p.acceleration.y, uniformStep.y, byDt);
+      accelerate(p.velocity.x, p.accumulated().x, uniformStep.x, byDt);
+      accelerate(p.velocity.y, p.accumulated().y, uniformStep.y, byDt);
       if (Dim == 3) {
-        accelerate(p.velocity[2], p.acceleration[2], uniformStep[2], byDt);
+        accelerate(p.velocity[2], p.accumulated()[2], uniformStep[2], byDt);
       }
       // (Linked only by a sketch that damps: Core/Particle.hpp.)
       const typename Damping<S, Dim>::Apply damp = Damping<S, Dim>::sApply;

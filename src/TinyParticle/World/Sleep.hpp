@@ -124,7 +124,7 @@ struct Sleeping {
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       P& p = world.particleAt(i);
       if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;
-      const bool pushed = !isNull(p.acceleration);
+      const bool pushed = !isNull(p.accumulated());
       if (p.isAsleep()) {
         if (pushed || !isNull(p.velocity)) {
           world.wakeAll();  // no sleepers left

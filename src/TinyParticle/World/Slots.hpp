@@ -63,8 +63,7 @@ template <typename S, uint8_t Dim>
 struct ForceSlot;
 
 // What a force generator's runner sees of the world during a step: the
-// particle pool and the step's uniform acceleration (gravity on every
-// particle adds to it). World::step() builds one on the stack. The runners
+// particle pool. World::step() builds one on the stack. The runners
 // take it instead of the world, so that every World<S, Dim, ...> type
 // shares the force slots' type, the runners and the code that places and
 // runs them (issue 12).
@@ -76,12 +75,10 @@ struct ForceStep {
   typedef tinyparticle::ForceSlot<S, Dim> ForceSlot;
 
   ParticleType* particles;
-  Vec* uniform;
   uint8_t particleCount;
 
   // For WorldAccess, as a world's.
   ParticleType& particleAt(uint8_t i) { return particles[i]; }
-  void addUniformAcceleration(const Vec& a) { *uniform += a; }
 };
 
 // The same for every world of this scalar and dimension.

@@ -1,10 +1,11 @@
-// What the world keeps for the length of a step, as empty base classes
-// where a world cannot use them (no RAM then).
+// What the world keeps besides its pools, as empty base classes where a
+// world cannot use them (no RAM then).
 //
-// The acceleration that a step applies to every movable particle alike
-// (gravity added for all particles), kept by the world instead of being
-// written into each particle's accumulator. A world without force
-// generators cannot have one.
+// The world's gravity: the acceleration that every step applies to every
+// movable particle alike (World::addGravity()), kept by the world rather
+// than by a force slot or by each particle's accumulator. Every world has
+// it, also one without force slots; it stays until it is changed
+// (addGravity() adds to it, removeForce() of its id or clear() zeroes it).
 #pragma once
 
 #include <stdint.h>
@@ -12,28 +13,16 @@
 namespace tinyparticle {
 namespace detail {
 
-template <class V, bool kUsed>
+template <class V>
 struct UniformAcceleration {
   V mUniform;
 
   constexpr UniformAcceleration() : mUniform() {}
   const V& uniform() const { return mUniform; }
-  V* uniformPointer() { return &mUniform; }
   template <typename S>
   S uniformComponent(S V::*component) const { return mUniform.*component; }
   void clearUniform() { mUniform = V(); }
   void addUniform(const V& a) { mUniform += a; }
-};
-
-template <class V>
-struct UniformAcceleration<V, false> {
-  constexpr UniformAcceleration() {}
-  V uniform() const { return V(); }
-  V* uniformPointer() { return nullptr; }
-  template <typename S>
-  S uniformComponent(S V::*) const { return S(); }
-  void clearUniform() {}
-  void addUniform(const V&) {}
 };
 
 // During a step, the step's Scaler (the multiply by dt) for the contact

@@ -8,10 +8,14 @@
 // code disappears at compile time; a generator type that is never added is
 // never instantiated, so its code is not linked.
 //
+// Gravity on every particle is a setting of the world (addGravity()), not a
+// force slot: every world keeps it, also one with no force slot. A world
+// without force slots also keeps no force accumulator in its particles
+// (ParticleType is Particle<S, Dim, false>, Core/Particle.hpp).
+//
 // A step (step(dt)):
-//  1. force generators add acceleration to their particles' accumulators
-//     (gravity for all particles is kept once, as the uniform acceleration);
-//  2. semi-implicit Euler: v += a dt (plus the uniform g dt, computed once),
+//  1. force generators add acceleration to their particles' accumulators;
+//  2. semi-implicit Euler: v += a dt (plus the world's g dt, computed once),
 //     damping (one multiply, skipped when 0), x += v dt, for every particle
 //     that is in use and movable. When dt is a power of two (1/256 s...),
 //     the multiplies by dt are rounding shifts (Math/Scaler.hpp). For a
@@ -62,7 +66,7 @@ namespace tinyparticle {
 template <typename S, uint8_t Dim, uint8_t kParticles, uint8_t kForces = 0,
           uint8_t kConstraints = 0, uint8_t kContacts = 0>
 class World
-    : private detail::Pool<Particle<S, Dim>, kParticles>,
+    : private detail::Pool<Particle<S, Dim, (kForces > 0)>, kParticles>,
       private detail::Pool<ForceSlot<S, Dim>, kForces>,
       private detail::Pool<
           ConstraintSlot<
@@ -70,7 +74,7 @@ class World
               World<S, Dim, kParticles, kForces, kConstraints, kContacts> >,
           kConstraints>,
       private detail::Pool<Contact<S, Dim>, kContacts>,
-      private detail::UniformAcceleration<Vec<S, Dim>, (kForces > 0)>,
+      private detail::UniformAcceleration<Vec<S, Dim> >,
       private detail::StepScaler<Scaler<S>, (kConstraints > 0)>,
       private detail::RodState<
           void (*)(World<S, Dim, kParticles, kForces, kConstraints, kContacts>&,
@@ -91,7 +95,9 @@ class World
  public:
   typedef S Scalar;
   typedef tinyparticle::Vec<S, Dim> Vec;
-  typedef Particle<S, Dim> ParticleType;
+  // Particle<S, Dim> with force slots; without, the same but the force
+  // accumulator (Core/Particle.hpp).
+  typedef Particle<S, Dim, (kForces > 0)> ParticleType;
   typedef Contact<S, Dim> ContactType;
   typedef tinyparticle::ForceSlot<S, Dim> ForceSlot;
   typedef tinyparticle::ConstraintSlot<S, Dim, World> ConstraintSlot;
@@ -108,7 +114,7 @@ class World
   typedef detail::Pool<ForceSlot, kForces> ForcePool;
   typedef detail::Pool<ConstraintSlot, kConstraints> ConstraintPool;
   typedef detail::Pool<ContactType, kContacts> ContactPool;
-  typedef detail::UniformAcceleration<Vec, (kForces > 0)> UniformStore;
+  typedef detail::UniformAcceleration<Vec> UniformStore;
   typedef detail::StepScaler<Scaler<S>, (kConstraints > 0)> StepScalerStore;
   typedef void (*RodSolve)(World&, const Scaler<S>&, S);
   typedef detail::RodState<RodSolve, S, (kConstraints > 0)> RodStore;
@@ -121,7 +127,7 @@ class World
   // The step's work on the particles, shared by every World<S, Dim, ...>:
   // the routines of WorldCore, and the algorithms they run.
   typedef WorldCore<S, Dim> Core;
-  typedef detail::ParticleSteps<S, Dim> Steps;
+  typedef detail::ParticleSteps<S, Dim, (kForces > 0)> Steps;
   using Core::mError;
   using Core::mContactCount;
   using Core::mIterationCap;
@@ -200,6 +206,10 @@ class World
 
   // Adds a force (N) for the next step: acceleration += force / mass.
   bool applyForce(ParticleId id, const Vec& force) {
+    static_assert(kForces > 0,
+                  "this World has no force slot, so its particles keep no "
+                  "force accumulator: World<S, Dim, particles, forces, "
+                  "constraints, contacts> needs forces > 0 for applyForce()");
     ParticleType* p = particle(id);
     if (p == nullptr) {
       mError |= WorldError::kStaleHandle;
@@ -227,12 +237,20 @@ class World
   // Each returns an invalid id and sets an error bit when the pool is full
   // (kForcesFull) or a particle id is stale (kStaleHandle).
 
-  // Gravity for every particle: standard gravity, or any acceleration.
+  // Gravity for every particle: standard gravity, or any acceleration. It
+  // is the world's, and takes no force slot (a world with none has it
+  // too): every movable particle gets it each step, until removeForce()
+  // of the id returned here switches it off. A second call adds to it.
+  // The id is always valid (kGravityIndex); removing it removes all of
+  // the world's gravity.
   ForceId addGravity() { return addGravity(standardGravity()); }
   ForceId addGravity(const Vec& acceleration) {
-    return placeForce(kAllIndex, kNoIndex, GravityType::make(acceleration),
-                      &GravityType::template runUniform<Forces>);
+    UniformStore::addUniform(acceleration);
+    return ForceId(kGravityIndex, 0);
   }
+  // The force index of the world's gravity: never a slot (a pool holds at
+  // most 252), below kAnchorIndex so that the id is valid.
+  static const uint8_t kGravityIndex = 0xFC;
   // Gravity for one particle, standard gravity times `multiplier`.
   ForceId addGravity(ParticleId target, S multiplier = S(1)) {
     if (!check(target)) return ForceId();
@@ -366,7 +384,12 @@ class World
     return paramsIn<C>(force(id));
   }
 
-  bool removeForce(ForceId id) { return removeSlot(force(id)); }
+  // Removes a force generator; the world's gravity for its id (false and
+  // kStaleHandle when the world has none).
+  bool removeForce(ForceId id) {
+    if (id == ForceId(kGravityIndex, 0)) return removeGravity();
+    return removeSlot(force(id));
+  }
 
   // ---- Constraints (contact generators) ----------------------------------
   // Each returns an invalid id and sets an error bit when the pool is full
@@ -523,10 +546,8 @@ class World
   void step(S dt) {
     // dt, statics, forces: WorldCore's, shared by the world types of this
     // S and Dim.
-    if (!Core::beginStep(&particleAt(0), kParticles, &forceAt(0), kForces,
-                         UniformStore::uniformPointer(), dt)) {
-      return;
-    }
+    if (!Core::beginStep(&particleAt(0), kParticles, dt)) return;
+    runForces(dt, detail::Choice<(kForces > 0)>());
     // dt looked at once: a multiply by it may be a shift (Math/Scaler.hpp).
     const Scaler<S> byDt(dt);
     // Sleeping (World/Sleep.hpp): when everything sleeps, nothing moves.
@@ -687,8 +708,8 @@ class World
   static S contactMargin() { return ScalarTraits<S>::depthMargin(); }
   static S speedMargin() { return ScalarTraits<S>::speedMargin(); }
 
-  // The acceleration that every movable particle gets in this step besides
-  // its accumulator (gravity added for all particles), m/s^2.
+  // The acceleration that every movable particle gets in each step besides
+  // its accumulator: the world's gravity (addGravity()), m/s^2.
   Vec uniformAcceleration() const { return UniformStore::uniform(); }
  private:
   // One component of it (&Vec::x, &Vec::y...), without copying the vector.
@@ -702,8 +723,10 @@ class World
   // along an axis take no multiply: Contacts/Contact.hpp.)
   S accelerationAlong(const ParticleType& p, const Vec& direction) const {
     if (p.isStatic()) return S();
-    if (kForces == 0) return detail::alongNormal(p.acceleration, direction);
-    return detail::sumAlongNormal(p.acceleration, UniformStore::uniform(),
+    if (kForces == 0) {
+      return detail::alongNormal(UniformStore::uniform(), direction);
+    }
+    return detail::sumAlongNormal(p.accumulated(), UniformStore::uniform(),
                                   direction);
   }
 
@@ -871,7 +894,6 @@ class World
   // gravity on every particle).
   ForceSlot& forceAt(uint8_t i) { return ForcePool::at(i); }
   const ForceSlot& forceAt(uint8_t i) const { return ForcePool::at(i); }
-  void addUniformAcceleration(const Vec& a) { UniformStore::addUniform(a); }
 
   // Empties a slot (WorldCore::freeSlot(): one copy per slot type).
   template <class Slot>
@@ -907,7 +929,8 @@ class World
     static_assert(kForces > 0,
                   "this World has no force slot: World<S, Dim, particles, "
                   "forces, constraints, contacts> needs forces > 0 for "
-                  "gravity, drag, springs, buoyancy and custom forces");
+                  "drag, springs, buoyancy, custom forces and gravity on "
+                  "one particle (the world's gravity takes no slot)");
     return Core::placeForce(&forceAt(0), kForces, a, b, generator, apply);
   }
   // ... run for particle a by the ForceRunner (b: kNoIndex, or
@@ -1065,19 +1088,38 @@ class World
   }
 
   // The integration of this step for a particle woken after it (it was
-  // asleep: no accumulated force, no velocity). The uniform acceleration's
-  // kick, v += g dt, as one vector: a zero component adds zero exactly.
+  // asleep: no accumulated force, no velocity). The gravity's kick,
+  // v += g dt, as one vector: a zero component adds zero exactly.
   void catchUp(ParticleType& p) {
     const Scaler<S>& byDt = StepScalerStore::stepScaler();
-    if (kForces != 0) {
-      const Vec& uniform = UniformStore::uniform();
-      Vec kick;
-      kick.x = byDt(uniform.x);
-      kick.y = byDt(uniform.y);
-      if (Dim == 3) kick[2] = byDt(uniform[2]);
-      p.velocity += kick;
-    }
+    const Vec& uniform = UniformStore::uniform();
+    Vec kick;
+    kick.x = byDt(uniform.x);
+    kick.y = byDt(uniform.y);
+    if (Dim == 3) kick[2] = byDt(uniform[2]);
+    p.velocity += kick;
     moveParticle(p, byDt);
+  }
+
+  // The step's force generators (WorldCore::runForces()); a world without
+  // force slots has none, and particles without accumulators.
+  void runForces(S dt, detail::Choice<true>) {
+    Core::runForces(&particleAt(0), kParticles, &forceAt(0), kForces, dt);
+  }
+  void runForces(S, detail::Choice<false>) {}
+
+  // removeForce() of the gravity's id: the world's gravity off.
+  bool removeGravity() {
+    bool on = false;
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (!detail::isZero(UniformStore::uniform()[k])) on = true;
+    }
+    if (!on) {
+      mError |= WorldError::kStaleHandle;
+      return false;
+    }
+    UniformStore::clearUniform();
+    return true;
   }
 
   // A contact of a sleeper that is closing or penetrating wakes everyone.

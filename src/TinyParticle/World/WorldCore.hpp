@@ -3,7 +3,9 @@
 // world-side routines of the set-up and the step (placing a particle or a
 // force, integrating, moving, marking statics, finishing a step). They take
 // their pool as a pointer and a count, so that two World types of the same
-// scalar and dimension in one sketch share them (issue 12): the compiler
+// scalar and dimension in one sketch share them (issue 12; the routines
+// over particles once per particle type: with and without the force
+// accumulator, Core/Particle.hpp): the compiler
 // keeps one copy of the large ones and inlines the small ones, where a call
 // would cost more than it shares. World<...> (World.hpp) keeps the pools
 // and the compile-time choices of which features link, and calls these. A
@@ -27,21 +29,28 @@
 #include "Slots.hpp"
 
 namespace tinyparticle {
+namespace detail {
+// A compile-time choice as an argument, to pick an overload.
+template <bool kValue>
+struct Choice {};
+}  // namespace detail
 
 template <typename S, uint8_t Dim>
 class WorldCore {
- public:
-  typedef Particle<S, Dim> ParticleType;
-
  protected:
   typedef tinyparticle::Vec<S, Dim> CoreVec;
-  typedef detail::ParticleSteps<S, Dim> Steps;
+  // The steps over a pool of particles of type P.
+  template <class P>
+  struct StepsFor {
+    typedef detail::ParticleSteps<S, Dim, P::kHasAccumulator> Type;
+  };
 
   constexpr WorldCore()
       : mError(0), mContactCount(0), mIterationCap(0), mStats() {}
 
   // The first free slot of the pool takes a particle (in use, colliding,
   // static when inverseMass is 0); kParticlesFull when there is none.
+  template <class ParticleType>
   ParticleId placeParticle(ParticleType* slots, uint8_t count,
                            const CoreVec& position, S inverseMass, S radius) {
     slots = detail::throughPointer(slots);
@@ -65,6 +74,7 @@ class WorldCore {
 
   // Whether a handle names a live particle of the pool; else kStaleHandle
   // is raised (World::check()).
+  template <class ParticleType>
   bool checkParticle(const ParticleType* slots, uint8_t count,
                      ParticleId id) {
     if (id.index < count) {
@@ -130,39 +140,35 @@ class WorldCore {
 
   // The step's first part: a dt that is not positive (0, negative, NaN) is
   // refused (kBadArgument, false: nothing moves); else the statics are
-  // marked and the force generators run, from a cleared uniform
-  // acceleration (`uniform`: null in a world without forces).
-  bool beginStep(ParticleType* particles, uint8_t count,
-                 CoreForceSlot* forces, uint8_t forceCount, CoreVec* uniform,
-                 S dt) {
+  // marked.
+  template <class ParticleType>
+  bool beginStep(ParticleType* particles, uint8_t count, S dt) {
     if (!detail::isPositive(dt)) {
       mError |= WorldError::kBadArgument;
       return false;
     }
     TINYPARTICLE_PROFILE_BEGIN(kProfileStep);
     markStatic(particles, count);
-    TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
-    if (forceCount != 0) {
-      *uniform = CoreVec();
-      ForceStep<S, Dim> step = {particles, uniform, count};
-      runForces(forces, forceCount, step, dt);
-    }
-    TINYPARTICLE_PROFILE_END(kProfileForces);
     return true;
   }
 
   // The step's force generators, each once (they add to the particles'
-  // accumulators and to the uniform acceleration).
-  static void runForces(CoreForceSlot* slots, uint8_t count,
-                        ForceStep<S, Dim>& forces, S dt) {
-    for (uint8_t i = 0; i < count; ++i) {
+  // accumulators). Only a world with force slots has any, and only its
+  // particles have accumulators.
+  static void runForces(Particle<S, Dim>* particles, uint8_t count,
+                        CoreForceSlot* slots, uint8_t forceCount, S dt) {
+    TINYPARTICLE_PROFILE_BEGIN(kProfileForces);
+    ForceStep<S, Dim> forces = {particles, count};
+    for (uint8_t i = 0; i < forceCount; ++i) {
       CoreForceSlot& f = slots[i];
       if (f.apply != nullptr) f.apply(forces, f, dt);
     }
+    TINYPARTICLE_PROFILE_END(kProfileForces);
   }
 
   // The step's first pass: a particle is static while its inverse mass is
   // 0 (a sketch may change the mass between steps).
+  template <class ParticleType>
   static void markStatic(ParticleType* slots, uint8_t count) {
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
@@ -177,7 +183,7 @@ class WorldCore {
   // only half of the uniform kick comes now, the rest after the move:
   // kick, drift, kick, the step of RATTLE, whose energy error is second
   // order in dt). kMoveHere as in ParticleSteps::integrate().
-  template <bool kMoveHere>
+  template <bool kMoveHere, class ParticleType>
   void integrateParticles(ParticleType* slots, uint8_t count,
                           const CoreVec& uniform, const Scaler<S>& byDt,
                           bool andMove) {
@@ -188,13 +194,14 @@ class WorldCore {
       const S whole = byDt(uniform[k]);
       uniformStep[k] = andMove ? whole : detail::half(whole);
     }
-    Steps::template integrate<kMoveHere>(slots, count, uniformStep, byDt,
-                                         andMove, mError);
+    StepsFor<ParticleType>::Type::template integrate<kMoveHere>(
+        slots, count, uniformStep, byDt, andMove, mError);
   }
 
   // For the rod solver: x += v dt for every movable particle, then the
   // rest of the uniform acceleration's kick (integrateParticles() gave the
   // first half).
+  template <class ParticleType>
   void moveParticles(ParticleType* slots, uint8_t count,
                      const CoreVec& uniform, const Scaler<S>& byDt) {
     CoreVec rest;
@@ -203,17 +210,22 @@ class WorldCore {
       const S whole = byDt(uniform[k]);
       rest[k] = whole - detail::half(whole);
     }
-    Steps::movePositions(slots, count, rest, byDt, mError);
+    StepsFor<ParticleType>::Type::movePositions(slots, count, rest, byDt,
+                                                mError);
   }
 
   // The step's last pass: with constraints (`checkFinite`), what the rods
   // and contacts left is checked (float only, ParticleSteps::checkFinite());
   // then the accumulators are cleared, so that forces applied between
   // steps act in the next one.
+  template <class ParticleType>
   void finishStep(ParticleType* slots, uint8_t count, bool checkFinite) {
     slots = detail::throughPointer(slots);
-    if (checkFinite) Steps::checkFinite(slots, count, mError);
-    for (uint8_t i = 0; i < count; ++i) slots[i].acceleration = CoreVec();
+    if (checkFinite) {
+      StepsFor<ParticleType>::Type::checkFinite(slots, count, mError);
+    }
+    if (!ParticleType::kHasAccumulator) return;
+    for (uint8_t i = 0; i < count; ++i) slots[i].clearAccumulated();
   }
 
   // The 16-bit field first: no padding byte between the fields.
