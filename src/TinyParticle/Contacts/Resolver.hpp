@@ -153,8 +153,9 @@ struct Resolver {
     return slot;
   }
 
+  // (The normal decoded from its stored form: one copy of the code below.)
   static S separatingVelocity(W& world, const C& c) {
-    return separatingVelocity(world, c.a, c.b, c.normal);
+    return separatingVelocity(world, c.a, c.b, detail::normalVector(c.normal));
   }
 
   // dot(va - vb, normal). An immovable particle counts as at rest, whatever
@@ -169,9 +170,11 @@ struct Resolver {
     return along(relative, normal);
   }
 
-  // dot(v, normal) for a contact normal: the same result, without the
-  // multiplies by the zeros and ones of axis planes' normals.
-  static S along(const V& v, const V& normal) {
+  // dot(v, normal) for a contact normal (a Vec, or a contact's stored form
+  // Contact::Normal): the same result, without the multiplies by the zeros
+  // and ones of axis planes' normals.
+  template <class N>
+  static S along(const V& v, const N& normal) {
     return detail::alongNormal(v, normal);
   }
 
@@ -227,8 +230,9 @@ struct Resolver {
 
   // velocity += normal * dv, move = normal * dx, position += move: one
   // call per particle (dv or dx may be 0: nothing to multiply then).
-  TINYPARTICLE_NOINLINE static void push(P& p, const V& normal, S dv, S dx,
-                                         V& move) {
+  TINYPARTICLE_NOINLINE static void push(P& p,
+                                         const typename C::Normal& normal,
+                                         S dv, S dx, V& move) {
     detail::pushAlongNormal(p.velocity, p.position, move, normal, dv, dx);
   }
 
@@ -311,12 +315,11 @@ struct Resolver {
       deltaV = -separating;
       if (!detail::isZero(restitution) || stacked) {
         // The closing velocity that this step's accelerations can have
-        // built, along the normal.
-        const S alongA =
-            WorldAccess::accelerationAlong(world, a, contact.normal);
+        // built, along the normal (decoded from its stored form).
+        const V& normal = detail::normalVector(contact.normal);
+        const S alongA = WorldAccess::accelerationAlong(world, a, normal);
         const S alongB =
-            movesB ? WorldAccess::accelerationAlong(world, *b, contact.normal)
-                   : S();
+            movesB ? WorldAccess::accelerationAlong(world, *b, normal) : S();
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing
