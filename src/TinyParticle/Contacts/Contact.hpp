@@ -244,6 +244,21 @@ inline void pushAlongNormal(Vec<T, 3>& velocity, Vec<T, 3>& position,
   position.z += move.z;
 }
 
+// A Vec normal in a contact's stored form (Contact::Normal: the second
+// argument only picks it): the same Vec, or its compact form.
+template <typename S, uint8_t Dim>
+inline const Vec<S, Dim>& storedNormal(const Vec<S, Dim>& normal,
+                                       const Vec<S, Dim>*) {
+  return normal;
+}
+template <typename T, uint8_t Dim>
+inline CompactNormal<T, Dim> storedNormal(const Vec<T, Dim>& normal,
+                                          const CompactNormal<T, Dim>*) {
+  CompactNormal<T, Dim> stored;
+  stored = normal;
+  return stored;
+}
+
 // The normal as a vector (a Vec is returned as it is).
 template <typename S, uint8_t Dim>
 inline const Vec<S, Dim>& normalVector(const Vec<S, Dim>& normal) {

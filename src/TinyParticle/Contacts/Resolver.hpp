@@ -153,21 +153,18 @@ struct Resolver {
     return slot;
   }
 
-  // (The normal decoded from its stored form: one copy of the code below.)
   static S separatingVelocity(W& world, const C& c) {
-    return separatingVelocity(world, c.a, c.b, detail::normalVector(c.normal));
+    return separatingVelocityAlong(world, c.a, c.b, c.normal);
   }
 
   // dot(va - vb, normal). An immovable particle counts as at rest, whatever
-  // its velocity field says (it never moves).
+  // its velocity field says (it never moves). The normal is taken in the
+  // form a contact stores (Contact::Normal), so that a contact's recorded
+  // separating velocity is the one the resolver computes from it.
   static S separatingVelocity(W& world, uint8_t a, uint8_t b, const V& normal) {
-    // (va - vb, then one dot with the normal: the same arithmetic as
-    // component by component, in one copy of the code.)
-    V relative = world.particleAt(a).velocity;
-    if (b != kNoIndex && !world.particleAt(b).isStatic()) {
-      relative -= world.particleAt(b).velocity;
-    }
-    return along(relative, normal);
+    const typename C::Normal& stored = detail::storedNormal(
+        normal, static_cast<const typename C::Normal*>(nullptr));
+    return separatingVelocityAlong(world, a, b, stored);
   }
 
   // dot(v, normal) for a contact normal (a Vec, or a contact's stored form
@@ -206,6 +203,19 @@ struct Resolver {
     }
     return worstIndex;
   }
+  // separatingVelocity() with the normal in its stored form. (Left to the
+  // compiler: forced out of line, a scene with one caller paid for a call.)
+  static S separatingVelocityAlong(W& world, uint8_t a, uint8_t b,
+                                   const typename C::Normal& normal) {
+    // (va - vb, then one dot with the normal: the same arithmetic as
+    // component by component, in one copy of the code.)
+    V relative = world.particleAt(a).velocity;
+    if (b != kNoIndex && !world.particleAt(b).isStatic()) {
+      relative -= world.particleAt(b).velocity;
+    }
+    return along(relative, normal);
+  }
+
   static bool isActive(const C& c, S closing, S deep) {
     return c.separatingVelocity < closing || c.penetration > deep;
   }
