@@ -18,49 +18,54 @@ using aunit::TestRunner;
 
 static const double kUnit14 = 1.0 / 16384;  // a Q1.14 unit, 2^-14
 
-// The normal of a Contact<S, Dim> after storing `given`, read back.
-template <typename S, uint8_t Dim>
-static Vec<S, Dim> stored(const Vec<S, Dim>& given) {
-  Contact<S, Dim> c;
-  c.normal = given;
-  Vec<S, Dim> back;
-  for (uint8_t i = 0; i < Dim; ++i) back[i] = c.normal[i];
-  return back;
-}
-
-template <uint8_t Dim>
-static double length(const Vec<Q16_16, Dim>& v) {
-  double sum = 0;
-  for (uint8_t i = 0; i < Dim; ++i) sum += double(v[i].toFloat()) * v[i].toFloat();
-  return sqrt(sum);
-}
-
-// Stores the unit vector `exact` (rounded to Q16.16 first, as a generator
-// would give it) and its negation; counts the bounds broken; `worst` gets
-// the largest | |stored| - 1 | seen, in Q1.14 units.
-template <uint8_t Dim>
-static int checkUnit(const double* exact, double* worst) {
-  typedef Vec<Q16_16, Dim> V;
-  V given, negated;
-  for (uint8_t i = 0; i < Dim; ++i) {
-    given[i] = Q16_16(exact[i]);
-    negated[i] = -given[i];
+// (In a struct: the Arduino builder writes no prototypes for its members.)
+struct Store {
+  // The normal of a Contact<S, Dim> after storing `given`, read back.
+  template <typename S, uint8_t Dim>
+  static Vec<S, Dim> stored(const Vec<S, Dim>& given) {
+    Contact<S, Dim> c;
+    c.normal = given;
+    Vec<S, Dim> back;
+    for (uint8_t i = 0; i < Dim; ++i) back[i] = c.normal[i];
+    return back;
   }
-  const V back = stored<Q16_16, Dim>(given);
-  const V backNegated = stored<Q16_16, Dim>(negated);
-  int broken = 0;
-  for (uint8_t i = 0; i < Dim; ++i) {
-    const int32_t error = back[i].raw() - given[i].raw();
-    if (error > 2 || error < -2) ++broken;
-    if (backNegated[i].raw() != -back[i].raw()) ++broken;
+
+  template <uint8_t Dim>
+  static double length(const Vec<Q16_16, Dim>& v) {
+    double sum = 0;
+    for (uint8_t i = 0; i < Dim; ++i) {
+      sum += double(v[i].toFloat()) * v[i].toFloat();
+    }
+    return sqrt(sum);
   }
-  const double lengthError = fabs(length<Dim>(back) - length<Dim>(given));
-  if (lengthError > sqrt(double(Dim)) * kUnit14 / 2) ++broken;
-  const double fromOne = fabs(length<Dim>(back) - 1) / kUnit14;
-  if (fromOne > 1) ++broken;
-  if (fromOne > *worst) *worst = fromOne;
-  return broken;
-}
+
+  // Stores the unit vector `exact` (rounded to Q16.16 first, as a generator
+  // would give it) and its negation; counts the bounds broken; `worst` gets
+  // the largest | |stored| - 1 | seen, in Q1.14 units.
+  template <uint8_t Dim>
+  static int checkUnit(const double* exact, double* worst) {
+    typedef Vec<Q16_16, Dim> V;
+    V given, negated;
+    for (uint8_t i = 0; i < Dim; ++i) {
+      given[i] = Q16_16(exact[i]);
+      negated[i] = -given[i];
+    }
+    const V back = stored<Q16_16, Dim>(given);
+    const V backNegated = stored<Q16_16, Dim>(negated);
+    int broken = 0;
+    for (uint8_t i = 0; i < Dim; ++i) {
+      const int32_t error = back[i].raw() - given[i].raw();
+      if (error > 2 || error < -2) ++broken;
+      if (backNegated[i].raw() != -back[i].raw()) ++broken;
+    }
+    const double stretch = fabs(length<Dim>(back) - length<Dim>(given));
+    if (stretch > sqrt(double(Dim)) * kUnit14 / 2) ++broken;
+    const double fromOne = fabs(length<Dim>(back) - 1) / kUnit14;
+    if (fromOne > 1) ++broken;
+    if (fromOne > *worst) *worst = fromOne;
+    return broken;
+  }
+};
 
 // Angles in (0, pi/2) and at its ends, many of them near an axis
 // (components of 2^-17 to 2^-12, below and at the rounding steps).
@@ -77,7 +82,7 @@ test(EveryQ16Value) {
   int broken = 0;
   for (int32_t raw = -65540; raw <= 65540; ++raw) {
     const Vec<Q16_16, 2> given(Q16_16::fromRaw(raw), Q16_16::fromRaw(-raw));
-    const Vec<Q16_16, 2> back = stored<Q16_16, 2>(given);
+    const Vec<Q16_16, 2> back = Store::stored<Q16_16, 2>(given);
     const int32_t error = back.x.raw() - raw;
     if (error > 2 || error < -2) ++broken;
     if ((raw & 3) == 2 && !(raw > 0 ? error > 0 : error < 0)) ++broken;
@@ -91,7 +96,7 @@ test(AxesExact) {
   const V3 axes[] = {V3(1.0, 0.0, 0.0), V3(0.0, -1.0, 0.0), V3(0.0, 0.0, 1.0),
                      V3(-1.0, 0.0, 0.0)};
   for (uint8_t k = 0; k < 4; ++k) {
-    const bool exact = stored<Q16_16, 3>(axes[k]) == axes[k];
+    const bool exact = Store::stored<Q16_16, 3>(axes[k]) == axes[k];
     assertTrue(exact);
   }
 }
@@ -102,13 +107,14 @@ test(Quadrants) {
   double worst = 0;
   int broken = 0, cases = 0;
   for (uint8_t k = 0; k < 2 * kNearCount + 24; ++k) {
-    const double angle = k < kNearCount ? kNearAxis[k]
-                       : k < 2 * kNearCount ? kHalfPi - kNearAxis[k - kNearCount]
-                       : (k - 2 * kNearCount + 0.5) * kHalfPi / 24;
+    const double angle =
+        k < kNearCount       ? kNearAxis[k]
+        : k < 2 * kNearCount ? kHalfPi - kNearAxis[k - kNearCount]
+                             : (k - 2 * kNearCount + 0.5) * kHalfPi / 24;
     for (uint8_t signs = 0; signs < 4; ++signs) {
       const double exact[2] = {(signs & 1 ? -1 : 1) * cos(angle),
                                (signs & 2 ? -1 : 1) * sin(angle)};
-      broken += checkUnit<2>(exact, &worst);
+      broken += Store::checkUnit<2>(exact, &worst);
       ++cases;
     }
   }
@@ -124,8 +130,9 @@ test(Octants) {
   double worst = 0;
   int broken = 0, cases = 0;
   for (uint8_t polar = 0; polar < kNearCount + 5; ++polar) {
-    const double theta =
-        polar < kNearCount ? kNearAxis[polar] : (polar - kNearCount + 0.5) * kHalfPi / 5;
+    const double theta = polar < kNearCount
+                             ? kNearAxis[polar]
+                             : (polar - kNearCount + 0.5) * kHalfPi / 5;
     for (uint8_t azimuth = 0; azimuth < kNearCount + 5; ++azimuth) {
       const double phi = azimuth < kNearCount ? kNearAxis[azimuth]
                          : (azimuth - kNearCount + 0.5) * kHalfPi / 5;
@@ -137,7 +144,7 @@ test(Octants) {
           for (uint8_t i = 0; i < 3; ++i) {
             exact[i] = (signs & (1 << i) ? -1 : 1) * base[(i + first) % 3];
           }
-          broken += checkUnit<3>(exact, &worst);
+          broken += Store::checkUnit<3>(exact, &worst);
           ++cases;
         }
       }
@@ -154,7 +161,7 @@ test(Q24_8Exact) {
   for (int32_t raw = -256; raw <= 256; ++raw) {
     const Vec<Q24_8, 3> given(Q24_8::fromRaw(raw), Q24_8::fromRaw(-raw),
                               Q24_8::fromRaw(raw / 2));
-    if (!(stored<Q24_8, 3>(given) == given)) ++broken;
+    if (!(Store::stored<Q24_8, 3>(given) == given)) ++broken;
   }
   assertEqual(broken, 0);
 }
