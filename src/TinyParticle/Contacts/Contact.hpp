@@ -108,7 +108,8 @@ inline void pushAlongNormal(Vec<S, 3>& velocity, Vec<S, 3>& position,
 // is favoured); truncation would shorten every normal a little and lose
 // energy at each bounce. Error, for Q16.16: each component within 2^-15 of
 // the Q16.16 one, so |n| within sqrt(Dim) 2^-15 < 2^-14 of the input's
-// length. A component outside (-2, 2) (not a unit normal) saturates.
+// length. A component beyond 16 bits (outside (-2, 2) for Q16.16: not a
+// unit normal) saturates.
 template <typename T>
 struct CompactComponent {
   typedef typename T::Raw Raw;
