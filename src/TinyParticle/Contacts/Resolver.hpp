@@ -154,24 +154,24 @@ struct Resolver {
   }
 
   static S separatingVelocity(W& world, const C& c) {
-    return separatingVelocity(world, c.a, c.b, c.normal);
+    return separatingVelocityAlong(world, c.a, c.b, c.normal);
   }
 
   // dot(va - vb, normal). An immovable particle counts as at rest, whatever
-  // its velocity field says (it never moves).
+  // its velocity field says (it never moves). The normal is taken in the
+  // form a contact stores (Contact::Normal), so that a contact's recorded
+  // separating velocity is the one the resolver computes from it.
   static S separatingVelocity(W& world, uint8_t a, uint8_t b, const V& normal) {
-    // (va - vb, then one dot with the normal: the same arithmetic as
-    // component by component, in one copy of the code.)
-    V relative = world.particleAt(a).velocity;
-    if (b != kNoIndex && !world.particleAt(b).isStatic()) {
-      relative -= world.particleAt(b).velocity;
-    }
-    return along(relative, normal);
+    const typename C::Normal& stored = detail::storedNormal(
+        normal, static_cast<const typename C::Normal*>(nullptr));
+    return separatingVelocityAlong(world, a, b, stored);
   }
 
-  // dot(v, normal) for a contact normal: the same result, without the
-  // multiplies by the zeros and ones of axis planes' normals.
-  static S along(const V& v, const V& normal) {
+  // dot(v, normal) for a contact normal (a Vec, or a contact's stored form
+  // Contact::Normal): the same result, without the multiplies by the zeros
+  // and ones of axis planes' normals.
+  template <class N>
+  static S along(const V& v, const N& normal) {
     return detail::alongNormal(v, normal);
   }
 
@@ -203,6 +203,19 @@ struct Resolver {
     }
     return worstIndex;
   }
+  // separatingVelocity() with the normal in its stored form. (Left to the
+  // compiler: forced out of line, a scene with one caller paid for a call.)
+  static S separatingVelocityAlong(W& world, uint8_t a, uint8_t b,
+                                   const typename C::Normal& normal) {
+    // (va - vb, then one dot with the normal: the same arithmetic as
+    // component by component, in one copy of the code.)
+    V relative = world.particleAt(a).velocity;
+    if (b != kNoIndex && !world.particleAt(b).isStatic()) {
+      relative -= world.particleAt(b).velocity;
+    }
+    return along(relative, normal);
+  }
+
   static bool isActive(const C& c, S closing, S deep) {
     return c.separatingVelocity < closing || c.penetration > deep;
   }
@@ -227,8 +240,9 @@ struct Resolver {
 
   // velocity += normal * dv, move = normal * dx, position += move: one
   // call per particle (dv or dx may be 0: nothing to multiply then).
-  TINYPARTICLE_NOINLINE static void push(P& p, const V& normal, S dv, S dx,
-                                         V& move) {
+  TINYPARTICLE_NOINLINE static void push(P& p,
+                                         const typename C::Normal& normal,
+                                         S dv, S dx, V& move) {
     detail::pushAlongNormal(p.velocity, p.position, move, normal, dv, dx);
   }
 
@@ -311,12 +325,11 @@ struct Resolver {
       deltaV = -separating;
       if (!detail::isZero(restitution) || stacked) {
         // The closing velocity that this step's accelerations can have
-        // built, along the normal.
-        const S alongA =
-            WorldAccess::accelerationAlong(world, a, contact.normal);
+        // built, along the normal (decoded from its stored form).
+        const V& normal = detail::normalVector(contact.normal);
+        const S alongA = WorldAccess::accelerationAlong(world, a, normal);
         const S alongB =
-            movesB ? WorldAccess::accelerationAlong(world, *b, contact.normal)
-                   : S();
+            movesB ? WorldAccess::accelerationAlong(world, *b, normal) : S();
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing
