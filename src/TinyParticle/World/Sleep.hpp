@@ -124,9 +124,9 @@ struct Sleeping {
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
       P& p = world.particleAt(i);
       if ((p.flags & (P::kInUse | P::kStatic)) != P::kInUse) continue;
-      const bool pushed = !isNull(p.accumulated());
+      const bool pushed = !detail::isZeroVector(p.accumulated());
       if (p.isAsleep()) {
-        if (pushed || !isNull(p.velocity)) {
+        if (pushed || !detail::isZeroVector(p.velocity)) {
           world.wakeAll();  // no sleepers left
           return false;
         }
@@ -170,12 +170,6 @@ struct Sleeping {
                                             const Scaler<S>& byDt) {
     return detail::isZero(byDt(v.x)) && detail::isZero(byDt(v.y)) &&
            detail::isZero(byDt(v.z));
-  }
-  static bool isNull(const Vec<S, 2>& v) {
-    return detail::isZero(v.x) && detail::isZero(v.y);
-  }
-  static bool isNull(const Vec<S, 3>& v) {
-    return detail::isZero(v.x) && detail::isZero(v.y) && detail::isZero(v.z);
   }
   static bool isSlow(const Vec<S, 2>& v, S limit) {
     return !(fabs(v.x) > limit) && !(fabs(v.y) > limit);

@@ -1110,11 +1110,7 @@ class World
 
   // removeForce() of the gravity's id: the world's gravity off.
   bool removeGravity() {
-    bool on = false;
-    for (uint8_t k = 0; k < Dim; ++k) {
-      if (!detail::isZero(UniformStore::uniform()[k])) on = true;
-    }
-    if (!on) {
+    if (detail::isZeroVector(UniformStore::uniform())) {
       mError |= WorldError::kStaleHandle;
       return false;
     }
