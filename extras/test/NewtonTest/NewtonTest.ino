@@ -32,6 +32,7 @@ using tinyparticle::detail::inverseSqrt;
 using tinyparticle::detail::normalizeByMultiplies;
 using tinyparticle::detail::reciprocalByMultiplies;
 using tinyparticle::detail::turnDropFactor;
+using tinyparticle::detail::unitBySteps;
 
 typedef Q16_16 T;
 typedef T::Raw Raw;
@@ -60,17 +61,38 @@ static void checkInverseSqrt(Raw q) {
   }
 }
 
+// Both unit vector routines: the balls' (normalizeByMultiplies) and the
+// rods' (unitBySteps: Newton's steps from 1, the same bound).
 static void checkUnit(Raw a, Raw b) {
   if (a == 0 && b == 0) return;  // (below)
-  Vec2<T> v;
-  v.x = T::fromRaw(a);
-  v.y = T::fromRaw(b);
-  const bool nonZero = normalizeByMultiplies(v);
   const double x = a * kUnit, y = b * kUnit;
   const double length = sqrt(x * x + y * y);
-  if (!nonZero || fabs(valueOf(v.x) - x / length) > 3 * kUnit ||
-      fabs(valueOf(v.y) - y / length) > 3 * kUnit) {
-    fail(F("unit"), x, valueOf(v.x), x / length);
+  for (uint8_t way = 0; way < 2; ++way) {
+    Vec2<T> v;
+    v.x = T::fromRaw(a);
+    v.y = T::fromRaw(b);
+    const bool nonZero = way == 0 ? normalizeByMultiplies(v) : unitBySteps(v);
+    if (!nonZero || fabs(valueOf(v.x) - x / length) > 3 * kUnit ||
+        fabs(valueOf(v.y) - y / length) > 3 * kUnit) {
+      fail(way == 0 ? F("unit") : F("unitBySteps"), x, valueOf(v.x),
+           x / length);
+    }
+  }
+}
+
+// The rods' unit vector in 3D, where the scaled |v|^2 reaches 3 (its
+// first step's case): components a, b, c, each within 3 units.
+static void checkUnit3(Raw a, Raw b, Raw c) {
+  Vec3<T> v;
+  v.x = T::fromRaw(a);
+  v.y = T::fromRaw(b);
+  v.z = T::fromRaw(c);
+  const double x = a * kUnit, y = b * kUnit, z = c * kUnit;
+  const double length = sqrt(x * x + y * y + z * z);
+  if (!unitBySteps(v) || fabs(valueOf(v.x) - x / length) > 3 * kUnit ||
+      fabs(valueOf(v.y) - y / length) > 3 * kUnit ||
+      fabs(valueOf(v.z) - z / length) > 3 * kUnit) {
+    fail(F("unitBySteps 3D"), x, valueOf(v.x), x / length);
   }
 }
 
@@ -128,6 +150,31 @@ test(unitVectorsAtEveryLeadingBit) {
   Vec2<T> zero;
   assertFalse(normalizeByMultiplies(zero));
   assertTrue(zero.x == T(0) && zero.y == T(0));
+  assertFalse(unitBySteps(zero));
+  assertTrue(zero.x == T(0) && zero.y == T(0));
+}
+
+// Every leading bit in 3D: three equal components (|v|^2 = 3 after the
+// scaling), one with two others of the same or a neighbouring size, and
+// the largest and smallest raw values.
+test(rodUnitVectors3dAtEveryLeadingBit) {
+  gFailures = 0;
+  for (uint8_t s = 0; s < 31; ++s) {
+    const int32_t p = int32_t(1) << s;
+    for (int8_t d = -1; d <= 1; ++d) {
+      if (p + d <= 0) continue;
+      checkUnit3(p + d, p + d, p + d);
+      checkUnit3(-(p + d), p, -(p - 1 > 0 ? p - 1 : 1));
+      checkUnit3(p + d, 0, 0);
+      checkUnit3(1, -(p + d), INT32_MAX);
+    }
+  }
+  checkUnit3(INT32_MAX, INT32_MAX, INT32_MAX);
+  checkUnit3(-INT32_MAX, 1, -1);
+  assertEqual(gFailures, (uint16_t)0);
+  Vec3<T> zero;
+  assertFalse(unitBySteps(zero));
+  assertTrue(zero.x == T(0) && zero.y == T(0) && zero.z == T(0));
 }
 
 test(turnFactorOnBothSidesOfItsLimits) {
@@ -238,16 +285,46 @@ test(floatReciprocalAtEveryExponent) {
   }
 }
 
+// Both unit vector routines: the balls' at every exponent; the rods'
+// (unitBySteps) where |v|^2 is a normal float, and false (v unchanged)
+// where it is not (a factor 2 either side of the limits, for the
+// rounding of |v|^2, may go either way, but must be right).
 static void checkFloatUnit(float x, float y) {
-  Vec2<Float> v;
-  v.x = Float(x);
-  v.y = Float(y);
-  const double length = sqrt(double(x) * x + double(y) * y);
-  const bool nonZero = normalizeByMultiplies(v);
+  const double length2 = double(x) * x + double(y) * y;
+  const double length = sqrt(length2);
   const double bound = 6 * 5.9604645e-8;
-  if (!nonZero || fabs(v.x.toFloat() - x / length) > bound ||
-      fabs(v.y.toFloat() - y / length) > bound) {
-    fail(F("float unit"), x, v.x.toFloat(), x / length);
+  const double smallest = ldexp(1.0, -126), largest = 3.4028234e38;
+  for (uint8_t way = 0; way < 2; ++way) {
+    Vec2<Float> v;
+    v.x = Float(x);
+    v.y = Float(y);
+    const bool nonZero = way == 0 ? normalizeByMultiplies(v) : unitBySteps(v);
+    if (way == 1 && !nonZero) {
+      if ((length2 > 2 * smallest && length2 < largest / 2) ||
+          floatBitsOf(v.x) != floatBitsOf(Float(x)) ||
+          floatBitsOf(v.y) != floatBitsOf(Float(y))) {
+        fail(F("float unitBySteps refused"), x, y, length2);
+      }
+      continue;
+    }
+    if (!nonZero || fabs(v.x.toFloat() - x / length) > bound ||
+        fabs(v.y.toFloat() - y / length) > bound) {
+      fail(way == 0 ? F("float unit") : F("float unitBySteps"), x,
+           v.x.toFloat(), x / length);
+    }
+  }
+}
+
+// The rods' unit vector in 3D, equal components, where |v|^2 is normal.
+static void checkFloatUnit3(float x) {
+  if (!(3.0 * x * x > ldexp(1.0, -125) && 3.0 * x * x < 1.0e38)) return;
+  Vec3<Float> v(Float(x), Float(-x), Float(x));
+  const double want = 1.0 / sqrt(3.0);
+  const double bound = 6 * 5.9604645e-8;
+  if (!unitBySteps(v) || fabs(v.x.toFloat() - want) > bound ||
+      fabs(v.y.toFloat() + want) > bound ||
+      fabs(v.z.toFloat() - want) > bound) {
+    fail(F("float unitBySteps 3D"), x, v.x.toFloat(), want);
   }
 }
 
@@ -261,12 +338,15 @@ test(floatUnitVectorsAtEveryExponent) {
       checkFloatUnit(p, others[k]);
       checkFloatUnit(-others[k], -p);
     }
+    checkFloatUnit3(p);
   }
   assertEqual(gFailures, (uint16_t)0);
   const float bad[] = {0.0f, INFINITY, -INFINITY, NAN};
   for (uint8_t k = 0; k < 4; ++k) {
     Vec2<Float> v(Float(bad[k]), Float(0.0f));
     assertFalse(normalizeByMultiplies(v));
+    assertTrue(floatBitsOf(v.x) == floatBitsOf(Float(bad[k])));
+    assertFalse(unitBySteps(v));
     assertTrue(floatBitsOf(v.x) == floatBitsOf(Float(bad[k])));
   }
 }

@@ -130,7 +130,7 @@ struct RodEquations {
                                                    Link& link) {
     V& d = link.direction;
     d = span(particles, a, b, link);
-    if (!detail::normalizeByMultiplies(d)) d.y = S(1);  // d is 0
+    if (!detail::unitBySteps(d)) d.y = S(1);  // d is 0
   }
 
   // A rod's direction from its span d. Near its length, d / L is nearly a
@@ -179,7 +179,7 @@ struct RodEquations {
   // By multiplies (Math/Newton.hpp), as start() normalises: one unit
   // vector routine linked, and none that takes a square root or divides.
   static void normalizeInto(V d, Link& link) {
-    if (detail::normalizeByMultiplies(d)) link.direction = d;
+    if (detail::unitBySteps(d)) link.direction = d;
     // else the ends coincide: keep the old direction
   }
 

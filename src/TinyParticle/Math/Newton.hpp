@@ -147,24 +147,88 @@ TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Float, N>& v) {
   return true;
 }
 
-// Fixed: the largest component is first brought into [1/2, 1) by powers
-// of two, so that short vectors keep their bits and long ones cannot
-// overflow; then v / |v| = v (1 / sqrt(|v|^2)).
+// Fixed: the largest component brought into [1/2, 1) by powers of two,
+// so that short vectors keep their bits and long ones cannot overflow;
+// false (v unchanged) for a zero vector. The largest magnitude's leading
+// bit is that of all magnitudes' raw bits or-ed together: it is tracked
+// in those bits (unsigned shifts), which costs no fabs() and no compares
+// of Fixed values.
 template <uint8_t I, uint8_t F, uint8_t N>
-TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Fixed<I, F>, N>& v) {
+inline bool scaleLargestIntoHalfToOne(Vec<Fixed<I, F>, N>& v) {
   typedef Fixed<I, F> S;
-  S largest = S();
-  for (uint8_t i = 0; i < N; ++i) largest = fmax(largest, fabs(v[i]));
-  if (isZero(largest)) return false;
-  while (largest < S(0.5)) {
-    largest += largest;
+  typedef typename S::URaw U;
+  U bits = 0;
+  for (uint8_t i = 0; i < N; ++i) {
+    const typename S::Raw r = v[i].raw();
+    bits = U(bits | (r < 0 ? U(U(0) - U(r)) : U(r)));
+  }
+  if (bits == 0) return false;
+  const U kHalf = U(U(1) << (F - 1));  // the raw bits of 1/2
+  while (bits < kHalf) {
+    bits = U(bits << 1);
     v += v;
   }
-  while (!(largest < S(1))) {
-    largest = half(largest);
+  while (bits >= U(kHalf << 1)) {
+    bits = U(bits >> 1);
     v *= S(0.5);
   }
+  return true;
+}
+// Fixed: v / |v| = v (1 / sqrt(|v|^2)), v scaled as above.
+template <uint8_t I, uint8_t F, uint8_t N>
+TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Fixed<I, F>, N>& v) {
+  if (!scaleLargestIntoHalfToOne(v)) return false;
   v *= inverseSqrt(dotOutOfLine(v, v));
+  return true;
+}
+
+// A rod's unit direction (its first, or one far off its length or after a
+// fast turn: Contacts/RodSolver.hpp): set-up and rare steps, where flash
+// counts and cycles hardly do (issue 12). The plain unit vector for other
+// scalars (a host's double).
+template <typename S, uint8_t N>
+inline bool unitBySteps(Vec<S, N>& v) {
+  return normalizeByMultiplies(v);
+}
+// Fixed: v scaled as above, so that q = |v|^2 is in [1/4, 3); then
+// 1 / sqrt(q) by Newton's steps y <- y (1.5 - q y^2 / 2) from y = 1, with
+// no reduction and no first guess (inverseSqrt(), above, has both: about
+// 380 B of Q16.16 code). In l = y sqrt(q), a step is l <- l (1.5 - l^2 /
+// 2); the first takes q / 2 for q, l <- l (1.5 - l^2 / 4), which brings l
+// from [1/2, sqrt(3)) into [0.71, 1.42] (q = 3 would stop the plain step
+// at 0); from there four plain steps leave 6e-4 (enough for 10 fraction
+// bits), five 5e-7 (20 bits), six 3e-13. About 20 multiplies, twice
+// normalizeByMultiplies()'s: the balls' contact normals, taken every
+// step, keep that one.
+template <uint8_t I, uint8_t F, uint8_t N>
+TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Fixed<I, F>, N>& v) {
+  typedef Fixed<I, F> S;
+  const uint8_t kSteps = F <= 10 ? 5 : (F <= 20 ? 6 : 7);
+  if (!scaleLargestIntoHalfToOne(v)) return false;
+  const S q = dotOutOfLine(v, v);
+  S y = S(1);
+  S stepQ = half(q);  // the first step's (see above; the later steps mend its rounding)
+  for (uint8_t i = 0; i < kSteps; ++i) {
+    y *= S(1.5) - half(stepQ * y * y);
+    stepQ = q;
+  }
+  v *= y;
+  return true;
+}
+
+// Float: v (1 / sqrt(|v|^2)) by inverseSqrt() (a guess from the bits and
+// Newton's steps: linked anyway, for a fast turn's factor), without the
+// balls' scaling by powers of two: a rod's span is metres, far from the
+// ends of the float range. Where |v|^2 is not a normal float (|v| below
+// about 1e-19 or above 1.8e19, or a component infinite or NaN) v has no
+// direction here: false, v unchanged, as for a zero vector (a rod's
+// direction is then kept, or taken as any at set-up).
+template <uint8_t N>
+TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
+  const Float q = dotOutOfLine(v, v);
+  // One compare: 0, subnormals, infinity and NaN wrap above the range.
+  if (floatBits(q) - 0x00800000ul >= 0x7F000000ul) return false;
+  v *= inverseSqrt(q);
   return true;
 }
 
@@ -178,8 +242,31 @@ inline S turnDropFactor(S h) {
   if (!(h < S(0.5))) return S(2);
   return S(2) / (S(1) + sqrt(S(1) - (h + h)));
 }
+// Fixed, beyond the series (h > 1/32, a rod turning by more than 1/4 rad
+// in a step: a whip; see below): the formula, with s = sqrt(1 - 2h) by
+// Heron's steps s <- (s + m / s) / 2 (m = 1 - 2h) from 1 - h, which is
+// above it (the root is concave): they fall towards it, squaring the error
+// (halving it while s is far above, as near h = 1/2), and stop when s no
+// longer falls (rounding), 24 steps at most. Reciprocals only (linked
+// anyway for 1 / L and 1 / dt): a Fixed world's rods link no inverseSqrt()
+// (issue 12: 380 B of Q16.16). (Newton's steps on the factor itself lose
+// its precision near h = 1/2, where 1 - h f cancels.)
+template <typename S>
+TINYPARTICLE_NOINLINE S turnDropBySteps(S h) {
+  const S m = S(1) - (h + h);
+  S s = S(1) - h;
+  for (uint8_t i = 0; i < 24; ++i) {
+    const S next = half(s + m * reciprocalByMultiplies(s));
+    if (!(next < s)) break;
+    s = next;
+  }
+  const S r = reciprocalByMultiplies(S(1) + s);
+  return r + r;
+}
 // Float: as Fixed below, the series up to h = 1/32 with the terms up to
-// h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then Newton's steps.
+// h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then the formula,
+// through inverseSqrt() (which a Float world's rods link anyway for their
+// unit vectors: unitBySteps(), above).
 inline Float turnDropFactor(Float h) {
   typedef Float S;
   if (!(h > S(1.0 / 32))) {
@@ -194,9 +281,8 @@ inline Float turnDropFactor(Float h) {
 // 5h^3/8 + 7h^4/8 + 21h^5/16 + ... (Catalan numbers over powers of 2),
 // whose term in h^n is below 1.4 (1/32)^n there: cut after the last term
 // that reaches half a unit of the format (h^3 for 16 fraction bits: the
-// rest is below 9e-7; h for 8 bits: below 5e-4). Beyond, Newton's steps
-// (rare: a whip), with sqrt(m) = m / sqrt(m), and 1 / t by the compact
-// reciprocal (Fixed.hpp: linked anyway for a rod's 1 / L and for 1 / dt).
+// rest is below 9e-7; h for 8 bits: below 5e-4). Beyond, the formula
+// (rare: a whip; turnDropBySteps() above).
 template <uint8_t I, uint8_t F>
 Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   typedef Fixed<I, F> S;
@@ -209,9 +295,7 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
     return S(1) + h * (S(0.5) + p);
   }
   if (!(h < S(0.5))) return S(2);
-  const S m = S(1) - (h + h);
-  const S r = reciprocalByMultiplies(S(1) + m * inverseSqrt(m));
-  return r + r;
+  return turnDropBySteps(h);
 }
 
 }  // namespace detail
