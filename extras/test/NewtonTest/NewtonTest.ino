@@ -1,10 +1,13 @@
-// The multiply-only inverse square root, unit vector and turn
-// factor of Math/Newton.hpp, against the exact values (double on the host,
-// float on the Nano: both far finer than the bounds), on every input class
-// they distinguish: each leading-bit position of the argument and its
+// The multiply-only inverse square root, unit vectors (the balls'
+// normalizeByMultiplies() and the rods' unitBySteps()) and turn factor of
+// Math/Newton.hpp, against the exact values (double on the host, float on
+// the Nano: both far finer than the bounds), on every input class they
+// distinguish: each leading-bit position of the argument and its
 // neighbours (the reduction by powers of two), the ends of the reduced
-// range, zero and negatives, and for the turn factor both sides of its
-// series' limit h = 1/32 and of h = 1/2.
+// range (for the rods' unit vectors in 3D, |v|^2 up to 3), zero and
+// negatives, and for the turn factor both sides of its series' limit h =
+// 1/32, of h = 3/8 (where its root's argument 1 - 2h needs a scaling by 4)
+// and of h = 1/2.
 //
 // Bounds (Q16.16): after the reduction the inverse square root is in
 // (0.7, 1.42]; the last Newton step rounds three products and a halving,
@@ -181,7 +184,7 @@ test(turnFactorOnBothSidesOfItsLimits) {
   gFailures = 0;
   // 0, the threshold of a turn (1/512), the series' end (1/32), the
   // reach of the rod (1/2), in Q16.16 units, with neighbours.
-  const Raw edges[] = {0, 128, 2048, 32768, 65536};
+  const Raw edges[] = {0, 128, 2048, 24576, 32768, 65536};
   for (uint8_t k = 0; k < sizeof(edges) / sizeof(edges[0]); ++k) {
     for (int8_t d = -3; d <= 3; ++d) {
       if (edges[k] + d >= 0) checkTurn(edges[k] + d);
@@ -214,6 +217,16 @@ test(q24_8InverseSqrtAndTurnFactor) {
     const double want = turnFactorOf(raw * unit);
     if (fabs(got - want) > 4 * unit) {
       fail(F("Q24.8 turnDropFactor"), raw * unit, got, want);
+    }
+  }
+  // The rods' unit vector (five steps for 8 bits): (p, p), within 3 units.
+  for (uint8_t s = 0; s < 31; ++s) {
+    const int32_t raw = int32_t(1) << s;
+    Vec2<C> v(C::fromRaw(raw), C::fromRaw(-raw));
+    const double want = sqrt(0.5);
+    if (!unitBySteps(v) || fabs(v.x.raw() * unit - want) > 3 * unit ||
+        fabs(v.y.raw() * unit + want) > 3 * unit) {
+      fail(F("Q24.8 unitBySteps"), raw * unit, v.x.raw() * unit, want);
     }
   }
   assertEqual(gFailures, (uint16_t)0);

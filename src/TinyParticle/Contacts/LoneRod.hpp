@@ -102,7 +102,7 @@ struct LoneRod {
     if (pass.positions) {
       bool turning;
       amount = Eq::positionSpeed(d, ends.relativeVelocity(relative), u, link,
-                                 pass, error, turning);
+                                 pass, false, error, turning);
       if (turning) pass.turned = true;
     } else {
       Eq::setDirection(d, link, pass.turned);
@@ -209,7 +209,6 @@ struct LoneRods {
   static void solveAll(W& world, const Scaler<S>& byDt, S invDt) {
     typedef LoneRod<S, W::kDimensions, kEnds, typename W::ParticleType> Rod;
     Pass pass(byDt, invDt);
-    pass.unit = false;
     typename W::ParticleType* particles = &WorldAccess::particle(world, 0);
     for (;;) {
       for (uint8_t i = 0; i < W::kConstraintCapacity; ++i) {

@@ -94,15 +94,14 @@ struct RodEquations {
   // What a solve's pass over the rods shares.
   struct Pass {
     Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
-        turned(false), first(true), coupled(false), unit(true),
-        factored(false), worst() {}
+        turned(false), first(true), coupled(false), factored(false),
+        worst() {}
     const Scaler<S>& byDt;
     S invDt;
     bool positions;  // the position solve (SHAKE), or the velocities
     bool turned;     // a rod turned by more than 1/16 rad
     bool first;      // the first pass of the position solve
     bool coupled;    // chains meet: passes repeat (Gauss-Seidel)
-    bool unit;       // directions are unit vectors (else d / L: Lone rods)
     bool factored;   // the rows' factors are set for these directions
     S worst;         // the largest correction of a length, m
   };
@@ -251,9 +250,11 @@ struct RodEquations {
   // The exact form's drop, dt s^2 / (L + sqrt(L^2 - (dt s)^2)), is
   // (dt s^2 / 2L) detail::turnDropFactor(h), h = (dt s / L)^2 / 2 the half
   // square of the turn that decides `turning`: no division, no square root.
+  // `unit`: the directions are unit vectors (the chains'), else d / L
+  // (lone rods: Contacts/LoneRod.hpp), whose error is half of L - a.
   static S positionSpeed(const V& d, const V& w, const V& u,
-                         const Link& link,
-                         const Pass& pass, S& error, bool& turning) {
+                         const Link& link, const Pass& pass, bool unit,
+                         S& error, bool& turning) {
     const Scaler<S>& byDt = pass.byDt;
     const S invDt = pass.invDt;
     Frame f;
@@ -261,7 +262,7 @@ struct RodEquations {
     const S length = link.length;
     const S invL = link.inverseLength;
     error = length - f.along;
-    if (!pass.unit) error = detail::half(error);  // u = d / L: Lone rods
+    if (!unit) error = detail::half(error);  // u = d / L: lone rods
     const S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
     const S halfTurn2 = byDt(drop) * invL;  // (dt s / L)^2 / 2
     turning = halfTurn2 > S(1.0 / 512);
@@ -639,7 +640,7 @@ struct RodSolver {
     const V w = relativeVelocity(world, s);
     if (!pass.positions) return -dot(w, u);
     bool turning;
-    S right = Eq::positionSpeed(span(world, s), w, u, linkOf(s), pass,
+    S right = Eq::positionSpeed(span(world, s), w, u, linkOf(s), pass, true,
                                 error, turning);
     if (turning && detail::isZero(error)) pass.turned = true;
     if (!pass.first && !turning && !pass.coupled) {

@@ -190,29 +190,36 @@ template <typename S, uint8_t N>
 inline bool unitBySteps(Vec<S, N>& v) {
   return normalizeByMultiplies(v);
 }
-// Fixed: v scaled as above, so that q = |v|^2 is in [1/4, 3); then
-// 1 / sqrt(q) by Newton's steps y <- y (1.5 - q y^2 / 2) from y = 1, with
-// no reduction and no first guess (inverseSqrt(), above, has both: about
-// 380 B of Q16.16 code). In l = y sqrt(q), a step is l <- l (1.5 - l^2 /
-// 2); the first takes q / 2 for q, l <- l (1.5 - l^2 / 4), which brings l
-// from [1/2, sqrt(3)) into [0.71, 1.42] (q = 3 would stop the plain step
-// at 0); from there four plain steps leave 6e-4 (enough for 10 fraction
-// bits), five 5e-7 (20 bits), six 3e-13. About 20 multiplies, twice
-// normalizeByMultiplies()'s: the balls' contact normals, taken every
-// step, keep that one.
-template <uint8_t I, uint8_t F, uint8_t N>
-TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Fixed<I, F>, N>& v) {
+// Fixed: 1 / sqrt(q) for q in [1/4, 3), by Newton's steps y <- y (1.5 -
+// q y^2 / 2) from y = 1, with no reduction and no first guess
+// (inverseSqrt(), above, has both: about 380 B of Q16.16 code). In l = y
+// sqrt(q), a step is l <- l (1.5 - l^2 / 2); the first takes q / 2 for q,
+// l <- l (1.5 - l^2 / 4), which brings l from [1/2, sqrt(3)) into [0.71,
+// 1.42] (q = 3 would stop the plain step at 0); from there four plain
+// steps leave 6e-4 (enough for 10 fraction bits), five 5e-7 (20 bits),
+// six 3e-13. About 18 multiplies: for the rods' set-up and rare steps
+// (unitBySteps(), turnDropFactor()), where flash counts and cycles hardly
+// do (issue 12).
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrtFromOne(Fixed<I, F> q) {
   typedef Fixed<I, F> S;
   const uint8_t kSteps = F <= 10 ? 5 : (F <= 20 ? 6 : 7);
-  if (!scaleLargestIntoHalfToOne(v)) return false;
-  const S q = dotOutOfLine(v, v);
   S y = S(1);
   S stepQ = half(q);  // the first step's (see above; the later steps mend its rounding)
   for (uint8_t i = 0; i < kSteps; ++i) {
     y *= S(1.5) - half(stepQ * y * y);
     stepQ = q;
   }
-  v *= y;
+  return y;
+}
+// Fixed: v scaled as above, so that |v|^2 is in [1/4, 3) (N <= 3), then
+// v (1 / sqrt(|v|^2)) by inverseSqrtFromOne(). Twice the multiplies of
+// normalizeByMultiplies(): the balls' contact normals, taken every step,
+// keep that one.
+template <uint8_t I, uint8_t F, uint8_t N>
+TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Fixed<I, F>, N>& v) {
+  if (!scaleLargestIntoHalfToOne(v)) return false;
+  v *= inverseSqrtFromOne(dotOutOfLine(v, v));
   return true;
 }
 
@@ -242,27 +249,6 @@ inline S turnDropFactor(S h) {
   if (!(h < S(0.5))) return S(2);
   return S(2) / (S(1) + sqrt(S(1) - (h + h)));
 }
-// Fixed, beyond the series (h > 1/32, a rod turning by more than 1/4 rad
-// in a step: a whip; see below): the formula, with s = sqrt(1 - 2h) by
-// Heron's steps s <- (s + m / s) / 2 (m = 1 - 2h) from 1 - h, which is
-// above it (the root is concave): they fall towards it, squaring the error
-// (halving it while s is far above, as near h = 1/2), and stop when s no
-// longer falls (rounding), 24 steps at most. Reciprocals only (linked
-// anyway for 1 / L and 1 / dt): a Fixed world's rods link no inverseSqrt()
-// (issue 12: 380 B of Q16.16). (Newton's steps on the factor itself lose
-// its precision near h = 1/2, where 1 - h f cancels.)
-template <typename S>
-TINYPARTICLE_NOINLINE S turnDropBySteps(S h) {
-  const S m = S(1) - (h + h);
-  S s = S(1) - h;
-  for (uint8_t i = 0; i < 24; ++i) {
-    const S next = half(s + m * reciprocalByMultiplies(s));
-    if (!(next < s)) break;
-    s = next;
-  }
-  const S r = reciprocalByMultiplies(S(1) + s);
-  return r + r;
-}
 // Float: as Fixed below, the series up to h = 1/32 with the terms up to
 // h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then the formula,
 // through inverseSqrt() (which a Float world's rods link anyway for their
@@ -281,8 +267,12 @@ inline Float turnDropFactor(Float h) {
 // 5h^3/8 + 7h^4/8 + 21h^5/16 + ... (Catalan numbers over powers of 2),
 // whose term in h^n is below 1.4 (1/32)^n there: cut after the last term
 // that reaches half a unit of the format (h^3 for 16 fraction bits: the
-// rest is below 9e-7; h for 8 bits: below 5e-4). Beyond, the formula
-// (rare: a whip; turnDropBySteps() above).
+// rest is below 9e-7; h for 8 bits: below 5e-4). Beyond (rare: a whip)
+// the formula, with sqrt(m) = m / sqrt(m) by inverseSqrtFromOne() (linked
+// anyway for the rods' unit vectors), m = 1 - 2h brought into [1/4, 1) by
+// powers of 4 (exact) and the root scaled back by halvings, and the
+// compact reciprocal (linked anyway for 1 / L and 1 / dt): a Fixed
+// world's rods link no inverseSqrt() (issue 12: 380 B of Q16.16).
 template <uint8_t I, uint8_t F>
 Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   typedef Fixed<I, F> S;
@@ -295,7 +285,17 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
     return S(1) + h * (S(0.5) + p);
   }
   if (!(h < S(0.5))) return S(2);
-  return turnDropBySteps(h);
+  S m = S(1) - (h + h);
+  uint8_t halvings = 0;
+  while (m < S(0.25)) {
+    m += m;
+    m += m;
+    ++halvings;
+  }
+  S root = m * inverseSqrtFromOne(m);
+  for (; halvings > 0; --halvings) root = half(root);
+  const S r = reciprocalByMultiplies(S(1) + root);
+  return r + r;
 }
 
 }  // namespace detail
