@@ -94,7 +94,8 @@ struct LoneRod {
                                           Link& link, Pass& pass) {
     const Ends ends(particles, a, b);
     if (ends.isFixed()) return;
-    const V d = Eq::span(particles, a, kAnchored ? kAnchorIndex : b, link);
+    V d;
+    Eq::span(particles, a, kAnchored ? kAnchorIndex : b, link, d);
     const V& u = link.direction;
     V relative;
     S amount;

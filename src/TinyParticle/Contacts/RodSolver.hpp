@@ -106,17 +106,17 @@ struct RodEquations {
     S worst;         // the largest correction of a length, m
   };
 
-  // The vector from particles[b] (link.anchor for kAnchorIndex) to
-  // particles[a].
-  // (P: the world's particle type, with or without the accumulator.)
+  // d: the vector from particles[b] (link.anchor for kAnchorIndex) to
+  // particles[a]. (P: the world's particle type, with or without the
+  // accumulator. Into d, not returned: a vector returned in registers
+  // cost the callers more code.)
   template <class P>
-  TINYPARTICLE_NOINLINE static V span(const P* particles, uint8_t a,
-                                      uint8_t b, const Link& link) {
-    V d = particles[a].position;
+  TINYPARTICLE_NOINLINE static void span(const P* particles, uint8_t a,
+                                         uint8_t b, const Link& link, V& d) {
+    d = particles[a].position;
     // (A pivot is often at the origin: zeros are skipped.)
     detail::subtractNonZero(
         d, b == kAnchorIndex ? link.anchor : particles[b].position);
-    return d;
   }
 
   // A rod's first direction. Ends that coincide have no direction: any
@@ -128,7 +128,7 @@ struct RodEquations {
                                                    uint8_t a, uint8_t b,
                                                    Link& link) {
     V& d = link.direction;
-    d = span(particles, a, b, link);
+    span(particles, a, b, link, d);
     if (!detail::unitBySteps(d)) d.y = S(1);  // d is 0
   }
 
@@ -611,7 +611,9 @@ struct RodSolver {
 
   // The vector from b to a.
   TINYPARTICLE_NOINLINE static V span(W& world, const Slot& s) {
-    return Eq::span(&world.particleAt(0), s.a, s.b, linkOf(s));
+    V d;
+    Eq::span(&world.particleAt(0), s.a, s.b, linkOf(s), d);
+    return d;
   }
 
   // va - vb (b at rest when it is an anchor or fixed).
