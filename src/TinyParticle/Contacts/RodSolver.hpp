@@ -91,19 +91,15 @@ struct RodEquations {
   typedef tinyparticle::Vec<S, Dim> V;
   typedef LinkParams<S, Dim> Link;
 
-  // What a solve's pass over the rods shares.
+  // What a solve's pass over the rods shares (the lone rods' whole pass;
+  // the chains' adds its own fields: RodSolver::Pass).
   struct Pass {
-    Pass(const Scaler<S>& b, S i) : byDt(b), invDt(i), positions(true),
-        turned(false), first(true), coupled(false), factored(false),
-        worst() {}
+    Pass(const Scaler<S>& b, S i)
+        : byDt(b), invDt(i), positions(true), turned(false) {}
     const Scaler<S>& byDt;
     S invDt;
     bool positions;  // the position solve (SHAKE), or the velocities
     bool turned;     // a rod turned by more than 1/16 rad
-    bool first;      // the first pass of the position solve
-    bool coupled;    // chains meet: passes repeat (Gauss-Seidel)
-    bool factored;   // the rows' factors are set for these directions
-    S worst;         // the largest correction of a length, m
   };
 
   // d: the vector from particles[b] (link.anchor for kAnchorIndex) to
@@ -297,7 +293,17 @@ struct RodSolver {
   typedef typename W::ConstraintSlot Slot;
   typedef typename W::LinkParamsType Link;  // a rod's parameters
   typedef RodEquations<S, W::kDimensions> Eq;  // shared by every W
-  typedef typename Eq::Pass Pass;
+  // A pass of the chains' solve: the lone rods' (RodEquations::Pass) and
+  // what the chains' passes share.
+  struct Pass : Eq::Pass {
+    Pass(const Scaler<S>& b, S i)
+        : Eq::Pass(b, i), first(true), coupled(false), factored(false),
+          worst() {}
+    bool first;      // the first pass of the position solve
+    bool coupled;    // chains meet: passes repeat (Gauss-Seidel)
+    bool factored;   // the rows' factors are set for these directions
+    S worst;         // the largest correction of a length, m
+  };
 
   static Link& linkOf(Slot& s) { return s.params.template as<Link>(); }
   static const Link& linkOf(const Slot& s) {
