@@ -319,17 +319,15 @@ struct RodSolver {
   // A rod's slot makes no contacts: this marks it (World::isRod()).
   static void generate(W&, Slot&, uint8_t) {}
 
-  // A rod just added: its length's inverse and its first direction. False
-  // (nothing set) for a length that is not positive. Newton's reciprocal
-  // and unit vector (Math/Newton.hpp): a world whose step never divides
-  // links no fast divide (nor, in float, the float divide).
-  static bool start(W& world, Slot& s) {
+  // A rod just added, of a positive length (World::addRod() refuses
+  // others): its length's inverse and its first direction. Newton's
+  // reciprocal and unit vector (Math/Newton.hpp): a world whose step never
+  // divides links no fast divide (nor, in float, the float divide).
+  static void start(W& world, Slot& s) {
     typename W::LinkParamsType& link = linkOf(s);
-    if (!(link.length > S())) return false;
     link.inverseLength = detail::reciprocalByMultiplies(link.length);
     Eq::startDirection(&world.particleAt(0), s.a, s.b, link);
     link.next = link.prev = kNoIndex;
-    return true;
   }
 
   // The step's two solves (World::step calls them after integrating).

@@ -397,10 +397,14 @@ class World
 
   // A rod: the two particles stay `length` (m, > 0) apart. Rods are solved
   // together, exactly, by Contacts/RodSolver.hpp; they take no contacts.
+  // A length that is not positive is refused (kBadArgument) before a
+  // slot is taken.
   ConstraintId addRod(ParticleId a, ParticleId b, S length) {
+    if (!(length > S())) return refusedRod();
     return rodAdded(addLink(a, b, length, S(), &RodSolver<World>::generate));
   }
   ConstraintId addRod(ParticleId a, const Vec& anchor, S length) {
+    if (!(length > S())) return refusedRod();
     return anchoredRodAdded(addAnchoredLink(a, anchor, length, S(),
                                             &RodSolver<World>::generate));
   }
@@ -1036,16 +1040,17 @@ class World
     }
     return id;
   }
+  // (The length is positive: addRod() checked it.)
   bool startRod(ConstraintId id) {
     ConstraintSlot* c = constraint(id);
     if (c == nullptr) return false;
-    if (!RodSolver<World>::start(*this, *c)) {
-      freeSlot(*c);
-      mError |= WorldError::kBadArgument;
-      return false;
-    }
+    RodSolver<World>::start(*this, *c);
     RodStore::addRodBits(kRodsChanged);
     return true;
+  }
+  ConstraintId refusedRod() {
+    mError |= WorldError::kBadArgument;
+    return ConstraintId();
   }
 
   ConstraintId addLink(ParticleId a, ParticleId b, S length, S restitution,
