@@ -137,28 +137,25 @@ struct RodEquations {
                            Link& link, bool unit) {
     const S invL = link.inverseLength;
     V scaled(d.x * invL, d.y * invL);
-    const S x = scaled.x, y = scaled.y;
+    bool near;
     if (unit) {
       const S q = detail::dotOutOfLine(scaled, scaled);
-      if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
-        scaled *= S(1.5) - detail::half(q);
-        link.direction = scaled;
-        return;
-      }
+      near = q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256);
+      if (near) scaled *= S(1.5) - detail::half(q);
     } else {
       // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
       // 1.5 pass only lengths between 0.7 and 1.12, from which the lone
       // rods' half-error moves converge (see Contacts/LoneRod.hpp).
-      const S ax = fabs(x), ay = fabs(y);
+      const S ax = fabs(scaled.x), ay = fabs(scaled.y);
       const S sum = ax + ay;
-      if (ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
-          sum > S(1 - 1.0 / 64) && sum < S(1.5)) {
-        link.direction.x = x;
-        link.direction.y = y;
-        return;
-      }
+      near = ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
+             sum > S(1 - 1.0 / 64) && sum < S(1.5);
     }
-    normalizeInto(d, link);
+    if (near) {
+      link.direction = scaled;
+    } else {
+      normalizeInto(d, link);
+    }
   }
   static void setDirection(const Vec<S, 3>& d,
                            Link& link, bool unit) {
