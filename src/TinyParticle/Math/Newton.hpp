@@ -18,6 +18,12 @@
 // set-up and rare paths, not for every step. Float takes its first guess
 // from the bits instead (below); on AVR its square root and the unit
 // vector's divides came to about 900 B.
+// Two unit vectors: the balls' contact normals, taken every step, by
+// normalizeByMultiplies() (the inverse square root above); the rods', at
+// set-up and on rare steps, by unitBySteps(), which in Fixed takes more
+// Newton's steps from 1 and no reduction nor first guess
+// (inverseSqrtFromOne(), which the Fixed turn factor shares): a Fixed
+// world with rods and no balls links no inverseSqrt() (issue 12).
 #pragma once
 
 #include <stdint.h>
