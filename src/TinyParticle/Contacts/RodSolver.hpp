@@ -115,14 +115,17 @@ struct RodEquations {
         d, b == kAnchorIndex ? link.anchor : particles[b].position);
   }
 
-  // A rod's first direction. Ends that coincide have no direction: any
-  // will do (as for colliding balls), and the rod pushes them apart along
-  // it. (With none, they stayed together, unflagged: extras/stability.)
-  // Out of line: the set-up's frame stays small.
+  // A rod just added (RodSolver::start()): its length's inverse, no chain
+  // links yet, and its first direction. Ends that coincide have no
+  // direction: any will do (as for colliding balls), and the rod pushes
+  // them apart along it. (With none, they stayed together, unflagged:
+  // extras/stability.) Out of line and shared by every World type: the
+  // set-up's frame stays small.
   template <class P>
-  TINYPARTICLE_NOINLINE static void startDirection(const P* particles,
-                                                   uint8_t a, uint8_t b,
-                                                   Link& link) {
+  TINYPARTICLE_NOINLINE static void startRod(const P* particles, uint8_t a,
+                                             uint8_t b, Link& link) {
+    link.inverseLength = detail::reciprocalByMultiplies(link.length);
+    link.next = link.prev = kNoIndex;
     V& d = link.direction;
     span(particles, a, b, link, d);
     if (!detail::unitBySteps(d)) d.y = S(1);  // d is 0
@@ -321,10 +324,7 @@ struct RodSolver {
   // reciprocal and unit vector (Math/Newton.hpp): a world whose step never
   // divides links no fast divide (nor, in float, the float divide).
   static void start(W& world, Slot& s) {
-    typename W::LinkParamsType& link = linkOf(s);
-    link.inverseLength = detail::reciprocalByMultiplies(link.length);
-    Eq::startDirection(&world.particleAt(0), s.a, s.b, link);
-    link.next = link.prev = kNoIndex;
+    Eq::startRod(&world.particleAt(0), s.a, s.b, linkOf(s));
   }
 
   // The step's two solves (World::step calls them after integrating).
