@@ -1040,11 +1040,11 @@ class World
     }
     return id;
   }
-  // (The length is positive: addRod() checked it.)
+  // (The length is positive: addRod() checked it. A valid id is the slot
+  // just taken: no look-up.)
   bool startRod(ConstraintId id) {
-    ConstraintSlot* c = constraint(id);
-    if (c == nullptr) return false;
-    RodSolver<World>::start(*this, *c);
+    if (!id.isValid()) return false;
+    RodSolver<World>::start(*this, constraintAt(id.index));
     RodStore::addRodBits(kRodsChanged);
     return true;
   }
