@@ -206,7 +206,7 @@ const double kPushLead = 0.0175;  // s
 // step when the lever rests on one, more than the step can spare.
 typedef World<S, 2, 2, 1, 1, 0> HapticWorld;
 HapticWorld world;
-LeverScene lever;
+ConstraintId leverRodId;              // the rod, whose length the dial sets
 HapticWorld::ParticleType* leverEnd;  // the end, looked up once in setup()
 // The rod's parameters (its length and the 1 / length the solver uses),
 // looked up once in setup(); setLength() keeps both.
@@ -291,7 +291,7 @@ S stopX, stopY;            // m: the end at the upper range end (lower: y < 0)
 void setLeverLength(int reading) {
   dialReading = reading;
   const S length = kShortest + timesWhole(kLengthSpan, reading);
-  world.setLength(lever.rod, length);
+  world.setLength(leverRodId, length);
   // 1 / L^2 as the square of the rod's 1 / L, which setLength() has just
   // computed: Q16.16 holds L^2 only to 1.4e-4 of itself at 0.23 m, and
   // 1 / L to 2e-6.
@@ -516,7 +516,7 @@ bool serialQuiet(uint8_t n) {
 
 // A value with two decimals (magnitudes up to 655.35).
 const uint16_t kPowersOfTen[] PROGMEM = {10000, 1000, 100, 10, 1};
-uint8_t appendHundredths(char* line, uint8_t n, S value) {
+TINYPARTICLE_NOINLINE uint8_t appendHundredths(char* line, uint8_t n, S value) {
   uint32_t magnitude = uint32_t(value.raw());
   if (value < S()) {
     line[n++] = '-';
@@ -548,7 +548,7 @@ const char kStatusText[] PROGMEM =
     "angle # deg  push # N  length # m\r\n";
 const char kPlotterText[] PROGMEM = "angle:# force:# length:#\r\n";
 
-bool writeStatus() {
+TINYPARTICLE_NOINLINE bool writeStatus() {
   const S values[] = {leverRadians() * S(57.29578), push, leverRod->length};
   char line[kLineMax];
   uint8_t n = 0;
@@ -581,7 +581,8 @@ void setup() {
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
-  lever = buildLever(world, &userForce, kShortest);
+  const LeverScene lever = buildLever(world, &userForce, kShortest);
+  leverRodId = lever.rod;
   leverEnd = world.particle(lever.end);
   leverRod = world.constraintParams<HapticWorld::LinkParamsType>(lever.rod);
   setLeverLength(readAnalogNow(kLengthDialPin));
