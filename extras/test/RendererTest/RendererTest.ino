@@ -166,6 +166,34 @@ test(OffScreen) {
   assertEqual(line[21], '#');
 }
 
+// A twentieth of a cell outside the view's left or bottom edge is outside
+// it (positions round down to sixteenths of a cell; rounded toward zero,
+// they would land in the first column or the last row); as far inside, in.
+test(Edges_Q16_16) {
+  typedef Checks<Q16_16> C;
+  char line[21];
+  C::row(C::V(-0.005, 1.1), Q16_16(), 4, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(0.005, 1.1), Q16_16(), 4, line);
+  assertEqual(line, "o                   ");
+  C::row(C::V(1.05, -0.01), Q16_16(), 9, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(1.05, 0.01), Q16_16(), 9, line);
+  assertEqual(line, "          o         ");
+}
+test(Edges_Float) {
+  typedef Checks<Float> C;
+  char line[21];
+  C::row(C::V(-0.005, 1.1), Float(), 4, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(0.005, 1.1), Float(), 4, line);
+  assertEqual(line, "o                   ");
+  C::row(C::V(1.05, -0.01), Float(), 9, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(1.05, 0.01), Float(), 9, line);
+  assertEqual(line, "          o         ");
+}
+
 // A rod or a cable is dots between its ends; the fixed end shows as '+'.
 // (The Float world draws a cable: a rod there would link a second rod
 // solver, and the sketch would not fit the Nano.)

@@ -171,15 +171,37 @@ class AsciiRenderer {
   static const Units kSub = 16;       // sub-cell units per cell
   static const Units kLimit = 16000;
 
-  static Units clampUnits(int32_t v) {
-    return Units(v > kLimit ? kLimit : (v < -kLimit ? -kLimit : v));
+  // A scaled value's sub-cell units, rounded down and clamped to +-kLimit:
+  // the clamp on the raw value, then its integer part with the sign bit
+  // flipped (never negative, so no negative number is shifted).
+  template <uint8_t I, uint8_t F>
+  static Units unitsOf(Fixed<I, F> v) {
+    typedef Fixed<I, F> T;
+    // In 32 bits: the limit lies beyond a 16-bit format's range. (From 18
+    // fraction bits on, every value lies within it.)
+    const int32_t limit =
+        F <= 17 ? int32_t(kLimit) << (F <= 17 ? F : 0) : INT32_MAX;
+    int32_t raw = v.raw();
+    if (raw > limit) raw = limit;
+    if (raw < -limit) raw = -limit;
+    const typename T::URaw biased = typename T::URaw(
+        typename T::URaw(raw) ^ (typename T::URaw(1) << (T::kTotalBits - 1)));
+    return Units(int32_t(biased >> F) -
+                 (int32_t(1) << (T::kTotalBits - 1 - F)));
+  }
+  static Units unitsOf(Float v) {
+    float f = v.toFloat();
+    if (f > float(kLimit)) f = float(kLimit);
+    if (f < -float(kLimit)) f = -float(kLimit);
+    const Units whole = Units(f);                     // toward zero
+    return float(whole) > f ? Units(whole - 1) : whole;  // down
   }
   // One out-of-line routine for both axes: x and y share its code.
   // The axis is passed by address (a call then loads 2 bytes, not 8);
   // a length (a radius) is scaled without the origin.
   static TINYPARTICLE_NOINLINE Units toUnits(S v, const Axis& axis,
                                              bool isLength) {
-    return clampUnits(((isLength ? v : v - axis.origin) * axis.scale).toInt());
+    return unitsOf((isLength ? v : v - axis.origin) * axis.scale);
   }
   // A position's x and y into out[0] and out[1].
   static TINYPARTICLE_NOINLINE void pointUnits(const V& p, const Axis& x,
