@@ -204,6 +204,8 @@ const double kPushLead = 0.0175;  // s
 // are kept by the sketch (rangeEnds() below), not by two planes of the
 // engine: at 1,024 steps a second their contacts cost about 2,000 cycles a
 // step when the lever rests on one, more than the step can spare.
+// (The device simulator, extras/hil, reads world, leverEnd, userForce and
+// timing by their names.)
 typedef World<S, 2, 2, 1, 1, 0> HapticWorld;
 HapticWorld world;
 ConstraintId leverRodId;              // the rod, whose length the dial sets
@@ -211,6 +213,7 @@ HapticWorld::ParticleType* leverEnd;  // the end, looked up once in setup()
 // The rod's parameters (its length and the 1 / length the solver uses),
 // looked up once in setup(); setLength() keeps both.
 const HapticWorld::LinkParamsType* leverRod;
+Vec2<S> userForce;  // N, read by the custom force generator every step
 
 // 1,024 steps a second: timing is the one place that sets the step.
 RealTimeLoop timing(1024, kPlotter ? 50 : 5);
@@ -291,7 +294,6 @@ struct LeverState {
   S forcePerNewton;          // sensor distance / length^2: push to end force
   S forceScale;              // 1/s^2: the user's force on the end / its offset
   S stopX, stopY;            // m: the end at the upper range end (lower: y < 0)
-  Vec2<S> userForce;  // N, read by the custom force generator every step
 };
 LeverState state;
 int dialReading = -100;    // the dial's reading behind the lever length
@@ -409,9 +411,9 @@ void prepareStep() {
   if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
   const Vec2<S>& end = leverEnd->position;
   s.forceScale = felt * s.forcePerNewton;
-  s.userForce.x = -end.y;
-  s.userForce.y = end.x;
-  s.userForce *= s.forceScale;
+  userForce.x = -end.y;
+  userForce.y = end.x;
+  userForce *= s.forceScale;
 }
 
 // The lever's angle from level, asin(y / L) of the end's height: within
@@ -596,7 +598,7 @@ void setup() {
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
-  const LeverScene lever = buildLever(world, &state.userForce, kShortest);
+  const LeverScene lever = buildLever(world, &userForce, kShortest);
   leverRodId = lever.rod;
   leverEnd = world.particle(lever.end);
   leverRod = world.constraintParams<HapticWorld::LinkParamsType>(lever.rod);
