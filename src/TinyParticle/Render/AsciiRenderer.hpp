@@ -195,8 +195,8 @@ class AsciiRenderer {
     typedef Fixed<I, F> T;
     // In 32 bits: the limit lies beyond a 16-bit format's range. (From 18
     // fraction bits on, every value lies within it.)
-    const int32_t limit =
-        F <= 17 ? int32_t(kLimit) << (F <= 17 ? F : 0) : INT32_MAX;
+    const int32_t limit = F <= 17 ? int32_t(kLimit) << (F <= 17 ? F : 0)
+                                  : int32_t(0x7FFFFFFF);
     int32_t raw = v.raw();
     if (raw > limit) raw = limit;
     if (raw < -limit) raw = -limit;
