@@ -204,9 +204,11 @@ const double kPushLead = 0.0175;  // s
 // are kept by the sketch (rangeEnds() below), not by two planes of the
 // engine: at 1,024 steps a second their contacts cost about 2,000 cycles a
 // step when the lever rests on one, more than the step can spare.
+// (The device simulator, extras/hil, reads world, leverEnd, userForce and
+// timing by their names.)
 typedef World<S, 2, 2, 1, 1, 0> HapticWorld;
 HapticWorld world;
-LeverScene lever;
+ConstraintId leverRodId;              // the rod, whose length the dial sets
 HapticWorld::ParticleType* leverEnd;  // the end, looked up once in setup()
 // The rod's parameters (its length and the 1 / length the solver uses),
 // looked up once in setup(); setLength() keeps both.
@@ -279,26 +281,35 @@ uint8_t inputPin() {
   return (inputTurn & 1) ? kFsrUpPin : kFsrDownPin;
 }
 
-S downNewtons, upNewtons;  // the last reading of each FSR
-S push;                    // N at the sensors, averaged (down minus up)
-S pushRate;                // N/s, averaged
+// The values carried from pass to pass, in one struct. The functions that
+// use several of them reach them through a pointer the optimizer cannot
+// fold (detail::throughPointer(), Configuration.hpp): on the AVR a Q16.16
+// value loaded or stored through a pointer takes 8 bytes of code, from its
+// fixed address 16.
+struct LeverState {
+  S downNewtons, upNewtons;  // the last reading of each FSR
+  S push;                    // N at the sensors, averaged (down minus up)
+  S pushRate;                // N/s, averaged
+  S inverseLengthSquared;    // 1 / m^2 of the virtual lever
+  S forcePerNewton;          // sensor distance / length^2: push to end force
+  S forceScale;              // 1/s^2: the user's force on the end / its offset
+  S stopX, stopY;            // m: the end at the upper range end (lower: y < 0)
+};
+LeverState state;
 int dialReading = -100;    // the dial's reading behind the lever length
-S inverseLengthSquared;    // 1 / m^2 of the virtual lever
-S forcePerNewton;          // sensor distance / length^2: push to end force
-S forceScale;              // 1/s^2: the user's force on the end / its offset
-S stopX, stopY;            // m: the end at the upper range end (lower: y < 0)
 
 void setLeverLength(int reading) {
+  LeverState& s = *detail::throughPointer(&state);
   dialReading = reading;
   const S length = kShortest + timesWhole(kLengthSpan, reading);
-  world.setLength(lever.rod, length);
+  world.setLength(leverRodId, length);
   // 1 / L^2 as the square of the rod's 1 / L, which setLength() has just
   // computed: Q16.16 holds L^2 only to 1.4e-4 of itself at 0.23 m, and
   // 1 / L to 2e-6.
-  inverseLengthSquared = leverRod->inverseLength * leverRod->inverseLength;
-  forcePerNewton = kSensorDistance * inverseLengthSquared;
-  stopX = kStopCos * length;
-  stopY = kStopSin * length;
+  s.inverseLengthSquared = leverRod->inverseLength * leverRod->inverseLength;
+  s.forcePerNewton = kSensorDistance * s.inverseLengthSquared;
+  s.stopX = kStopCos * length;
+  s.stopY = kStopSin * length;
 }
 
 // Collects a finished conversion and starts the next; false if none was
@@ -310,7 +321,8 @@ bool serviceInputs() {
   ++inputTurn;
   AnalogInput::start(inputPin());
   if (pin != kLengthDialPin) {
-    (pin == kFsrDownPin ? downNewtons : upNewtons) = fsrNewtons(reading);
+    (pin == kFsrDownPin ? state.downNewtons : state.upNewtons) =
+        fsrNewtons(reading);
   } else if (reading > dialReading + 3 || reading < dialReading - 3) {
     setLeverLength(reading);  // a few steps of hysteresis against jitter
   }
@@ -344,14 +356,15 @@ struct Mirror {
 };
 
 void rangeEnds() {
+  LeverState& s = *detail::throughPointer(&state);
   HapticWorld::ParticleType* const end = leverEnd;
   const bool lower = end->position.y < S();
   if (lower) Mirror::y(end);
   Vec2<S>& x = end->position;
   Vec2<S>& v = end->velocity;
-  if (x.y > stopY) {
-    x.x = stopX;
-    x.y = stopY;
+  if (x.y > s.stopY) {
+    x.x = s.stopX;
+    x.y = s.stopY;
     const S out = kStopCos * v.y - kStopSin * v.x;  // along t
     if (out > S()) {  // moving out
       S back = S();
@@ -384,22 +397,23 @@ inline int32_t floorShift(int32_t x, uint8_t k) {
 // pivot, perpendicular to the virtual lever (a quarter turn counterclockwise:
 // pushing the physical end down lifts the virtual end).
 void prepareStep() {
+  LeverState& s = *detail::throughPointer(&state);
   rangeEnds();
   // Averages with weights 1/4 and 1/8 per step, as shifts. (Each FSR reads
   // under 19 N, so |change| < 10 N: its raw value times 1,024 fits.)
   const S change =
-      S::fromRaw(floorShift((downNewtons - upNewtons - push).raw(), 2));
-  push += change;
-  pushRate += S::fromRaw(floorShift(
-      change.raw() * long(timing.stepsPerSecond()) - pushRate.raw(), 3));
-  S felt = push + pushRate * kForceLead;
+      S::fromRaw(floorShift((s.downNewtons - s.upNewtons - s.push).raw(), 2));
+  s.push += change;
+  s.pushRate += S::fromRaw(floorShift(
+      change.raw() * long(timing.stepsPerSecond()) - s.pushRate.raw(), 3));
+  S felt = s.push + s.pushRate * kForceLead;
   if (felt > kPushLimit) felt = kPushLimit;
   if (felt < negative(kPushLimit)) felt = negative(kPushLimit);
   const Vec2<S>& end = leverEnd->position;
-  forceScale = felt * forcePerNewton;
+  s.forceScale = felt * s.forcePerNewton;
   userForce.x = -end.y;
   userForce.y = end.x;
-  userForce *= forceScale;
+  userForce *= s.forceScale;
 }
 
 // The lever's angle from level, asin(y / L) of the end's height: within
@@ -419,14 +433,15 @@ void commandServo() {
   const HapticWorld::ParticleType* end = leverEnd;
   const Vec2<S>& x = end->position;
   const S turnRate =
-      (x.x * end->velocity.y - x.y * end->velocity.x) * inverseLengthSquared;
+      (x.x * end->velocity.y - x.y * end->velocity.x) *
+      state.inverseLengthSquared;
   // Gravity's angular acceleration is -g x / L^2, the user's forceScale /
   // mass (the end's 0.1 kg, from buildLever()); their sum, the lever's,
   // looks kPushLead ahead (see there).
   // (forceScale x 10 stays below 310: the push is limited to kPushLimit.)
-  const S gravity = S(9.81) * x.x * inverseLengthSquared;
+  const S gravity = S(9.81) * x.x * state.inverseLengthSquared;
   S angle = leverRadians() + turnRate * kServoLead +
-            (timesWhole(forceScale, 10) - gravity) *
+            (timesWhole(state.forceScale, 10) - gravity) *
                 S(kPushLead * kPushLead * 0.5);
   if (stopHold != 0) {
     angle = stopHold < 0 ? negative(kRangeRadians) : kRangeRadians;
@@ -514,9 +529,12 @@ bool serialQuiet(uint8_t n) {
   return since <= kQuietUs && uint16_t(bytes) * kByteUs <= kQuietUs - since;
 }
 
-// A value with two decimals (magnitudes up to 655.35).
+// A value with two decimals (magnitudes up to 655.35). Out of line, as
+// writeStatus() below: inlined into loop(), each made it longer than the
+// call (a measurement: 96 bytes for both).
 const uint16_t kPowersOfTen[] PROGMEM = {10000, 1000, 100, 10, 1};
-uint8_t appendHundredths(char* line, uint8_t n, S value) {
+TINYPARTICLE_NOINLINE uint8_t appendHundredths(char* line, uint8_t n,
+                                               S value) {
   uint32_t magnitude = uint32_t(value.raw());
   if (value < S()) {
     line[n++] = '-';
@@ -548,8 +566,9 @@ const char kStatusText[] PROGMEM =
     "angle # deg  push # N  length # m\r\n";
 const char kPlotterText[] PROGMEM = "angle:# force:# length:#\r\n";
 
-bool writeStatus() {
-  const S values[] = {leverRadians() * S(57.29578), push, leverRod->length};
+TINYPARTICLE_NOINLINE bool writeStatus() {
+  const S values[] = {leverRadians() * S(57.29578), state.push,
+                      leverRod->length};
   char line[kLineMax];
   uint8_t n = 0;
   uint8_t k = 0;
@@ -568,20 +587,22 @@ bool writeStatus() {
 
 // ---- Setup and loop ------------------------------------------------------
 void setup() {
+  LeverState& s = *detail::throughPointer(&state);
   Serial.begin(115200);
   // The push starts from the sensors as they are (a hand may already be on
   // the lever), not from zero: a push from nothing would kick the weight.
   AnalogInput::begin();
   const S down = fsrNewtons(readAnalogNow(kFsrDownPin));
   const S up = fsrNewtons(readAnalogNow(kFsrUpPin));
-  downNewtons = down;
-  upNewtons = up;
-  push = down - up;
+  s.downNewtons = down;
+  s.upNewtons = up;
+  s.push = down - up;
   leverServo.attach(kServoPin, kServoMinUs, kServoMaxUs);
 #ifdef HAPTIC_PROFILE_PIN
   pinMode(HAPTIC_PROFILE_PIN, OUTPUT);
 #endif
-  lever = buildLever(world, &userForce, kShortest);
+  const LeverScene lever = buildLever(world, &userForce, kShortest);
+  leverRodId = lever.rod;
   leverEnd = world.particle(lever.end);
   leverRod = world.constraintParams<HapticWorld::LinkParamsType>(lever.rod);
   setLeverLength(readAnalogNow(kLengthDialPin));

@@ -71,7 +71,7 @@ typedef struct {
   avr_irq_t* adc[3];
   long steps_since_trace;
   // Firmware symbols (data addresses), 0 when missing.
-  uint32_t a_world, a_lever, a_timing, a_user_force, a_serial;
+  uint32_t a_world, a_lever_end, a_timing, a_user_force, a_serial;
   int serial_ok;
   long tx_full_steps;
   int end_index;
@@ -111,10 +111,12 @@ static double q16(uint32_t addr) { return (int32_t)rd32(addr) / 65536.0; }
 
 static int read_virtual(Virtual* v) {
   if (!sim.a_world || !sim.a_user_force) return 0;
-  // lever.end (a handle: slot index, generation) is set by setup().
-  sim.end_index = sim.avr->data[sim.a_lever + 2];
+  // leverEnd (the end particle's address in `world`) is set by setup().
+  const uint32_t p =
+      sim.avr->data[sim.a_lever_end] | sim.avr->data[sim.a_lever_end + 1] << 8;
+  if (p < sim.a_world || (p - sim.a_world) % PARTICLE_BYTES != 0) return 0;
+  sim.end_index = (int)((p - sim.a_world) / PARTICLE_BYTES);
   if (sim.end_index > 1) return 0;
-  const uint32_t p = sim.a_world + (uint32_t)sim.end_index * PARTICLE_BYTES;
   v->x = q16(p);
   v->y = q16(p + 4);
   v->vx = q16(p + 8);
@@ -435,12 +437,12 @@ static int cmd_run(int argc, char** argv) {
   avr->vcc = avr->avcc = avr->aref = (uint32_t)params.vref_mV;
 
   sim.a_world = find_symbol(&fw, "world");
-  sim.a_lever = find_symbol(&fw, "lever");
+  sim.a_lever_end = find_symbol(&fw, "leverEnd");
   sim.a_timing = find_symbol(&fw, "timing");
   sim.a_user_force = find_symbol(&fw, "userForce");
-  if (!sim.a_world || !sim.a_lever || !sim.a_timing || !sim.a_user_force) {
+  if (!sim.a_world || !sim.a_lever_end || !sim.a_timing || !sim.a_user_force) {
     fprintf(stderr,
-            "hil: symbols world, lever, timing, userForce not all found\n");
+            "hil: symbols world, leverEnd, timing, userForce not all found\n");
     return 3;
   }
 

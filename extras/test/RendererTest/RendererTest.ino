@@ -31,7 +31,6 @@ struct Checks {
   typedef World<S, 2, 3, 0, 1, 1> W;  // a cable needs a contact slot
   typedef typename W::Vec V;
   // 20 x 10 characters over 2 m x 2 m: cells of 0.1 m x 0.2 m.
-  typedef AsciiRenderer<W, 20, 10> R;
 
   // Row `row` of a view holding one particle, as a C string; kShape:
   // ParticleShape::kCircles (the default) or kPoints.
@@ -67,16 +66,17 @@ struct Checks {
     out[20] = '\0';
   }
 
-  // A whole frame with a border, line by line: returns how many calls
-  // returned false before the one that returned true.
-  static uint8_t frame(Capture& capture, bool border = true,
-                       bool home = false) {
+  // A whole frame, line by line (kFrame: FrameStyle::kBorder, the default,
+  // or another style): returns how many calls returned false before the
+  // one that returned true.
+  template <uint8_t kFrame = FrameStyle::kBorder>
+  static uint8_t frame(Capture& capture) {
     W w;
     V where(1.05, 1.1);
     w.addParticle(where, S(1));
-    R renderer(S(0), S(0), S(0.1), S(0.2));
-    renderer.setBorder(border);
-    renderer.setHome(home);
+    AsciiRenderer<W, 20, 10, ParticleShape::kCircles, LinkShape::kLines,
+                  kFrame>
+        renderer(S(0), S(0), S(0.1), S(0.2));
     uint8_t calls = 0;
     while (!renderer.drawLine(w, capture) && calls < 50) ++calls;
     return calls;
@@ -166,6 +166,34 @@ test(OffScreen) {
   assertEqual(line[21], '#');
 }
 
+// A twentieth of a cell outside the view's left or bottom edge is outside
+// it (positions round down to sixteenths of a cell; rounded toward zero,
+// they would land in the first column or the last row); as far inside, in.
+test(Edges_Q16_16) {
+  typedef Checks<Q16_16> C;
+  char line[21];
+  C::row(C::V(-0.005, 1.1), Q16_16(), 4, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(0.005, 1.1), Q16_16(), 4, line);
+  assertEqual(line, "o                   ");
+  C::row(C::V(1.05, -0.01), Q16_16(), 9, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(1.05, 0.01), Q16_16(), 9, line);
+  assertEqual(line, "          o         ");
+}
+test(Edges_Float) {
+  typedef Checks<Float> C;
+  char line[21];
+  C::row(C::V(-0.005, 1.1), Float(), 4, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(0.005, 1.1), Float(), 4, line);
+  assertEqual(line, "o                   ");
+  C::row(C::V(1.05, -0.01), Float(), 9, line);
+  assertEqual(line, "                    ");
+  C::row(C::V(1.05, 0.01), Float(), 9, line);
+  assertEqual(line, "          o         ");
+}
+
 // A rod or a cable is dots between its ends; the fixed end shows as '+'.
 // (The Float world draws a cable: a rod there would link a second rod
 // solver, and the sketch would not fit the Nano.)
@@ -201,7 +229,7 @@ test(FrameByLines) {
 // rows of 20 characters and a newline each; the 10th call completes it.
 test(FrameWithoutBorderWithHome) {
   Capture capture;
-  assertEqual((int) Checks<Q16_16>::frame(capture, false, true), 9);
+  assertEqual((int) Checks<Q16_16>::frame<FrameStyle::kHome>(capture), 9);
   assertEqual((int) capture.lines, 10);
   assertEqual((int) capture.length, 3 + 10 * 21);
   assertEqual(capture.text[0], '\x1b');
@@ -210,6 +238,22 @@ test(FrameWithoutBorderWithHome) {
   assertEqual(capture.text[3], ' ');
   assertEqual(capture.text[3 + 20], '\n');
   assertEqual(capture.text[3 + 4 * 21 + 10], 'o');  // row 4, column 10
+}
+
+// lineLength(): the most a drawLine() call writes (the frames above: 23
+// characters a line with the border; the home code and 21 without it).
+test(LineLength) {
+  typedef Checks<Q16_16>::W W;
+  typedef AsciiRenderer<W, 20, 10> Bordered;
+  typedef AsciiRenderer<W, 20, 10, ParticleShape::kCircles, LinkShape::kLines,
+                        FrameStyle::kHome>
+      Homed;
+  typedef AsciiRenderer<W, 20, 10, ParticleShape::kCircles, LinkShape::kLines,
+                        FrameStyle::kPlain>
+      Plain;
+  assertEqual((int) Bordered::lineLength(), 23);
+  assertEqual((int) Homed::lineLength(), 3 + 21);
+  assertEqual((int) Plain::lineLength(), 21);
 }
 
 void setup() {
