@@ -129,10 +129,12 @@ struct PlaneConstraint {
   };
 
   // An axis plane, or one wall of a box, as touch() takes it (one
-  // argument, not five: the call costs less): its normal (+e or -e), that
-  // axis's member, the offset, the constraint slot, and the normal's sign.
+  // argument, not five: the call costs less): its normal (+e or -e, in the
+  // contacts' stored form N), that axis's member, the offset, the
+  // constraint slot, and the normal's sign.
+  template <class N>
   struct Wall {
-    Vec<S, Dim> normal;
+    N normal;
     S Vec<S, Dim>::*along;
     S offset;
     uint8_t source;
@@ -176,18 +178,21 @@ struct PlaneConstraint {
         nearHigh[highCount++] = i;
       }
     }
-    Wall wall;
+    typedef typename W::ContactType::Normal N;
+    Wall<N> wall;
     wall.along = along;
     wall.source = source;
-    wall.normal = V();
+    V unit;
     if (lowCount != 0) {
-      wall.normal.*along = S(1);
+      unit.*along = S(1);
+      wall.normal = detail::storedNormal(unit, static_cast<const N*>(nullptr));
       wall.offset = low;
       wall.positive = true;
       for (uint8_t k = 0; k < lowCount; ++k) touch(world, wall, nearLow[k]);
     }
     if (highCount != 0) {
-      wall.normal.*along = S(-1);
+      unit.*along = S(-1);
+      wall.normal = detail::storedNormal(unit, static_cast<const N*>(nullptr));
       wall.offset = highOffset;
       wall.positive = false;
       for (uint8_t k = 0; k < highCount; ++k) touch(world, wall, nearHigh[k]);
@@ -202,8 +207,9 @@ struct PlaneConstraint {
   // give); the sign does not matter for the acceleration, only whether it
   // is zero (WorldAccess::isIdle<W>()).
   template <class W>
-  TINYPARTICLE_NOINLINE static void touch(W& world, const Wall& wall,
-                                          uint8_t i) {
+  TINYPARTICLE_NOINLINE static void touch(
+      W& world, const Wall<typename W::ContactType::Normal>& wall,
+      uint8_t i) {
     S Vec<S, Dim>::*const along = wall.along;
     const typename W::ParticleType& p = WorldAccess::particle(world, i);
     // Along the normal: the coordinate and velocity, negated for -e (the
@@ -221,8 +227,8 @@ struct PlaneConstraint {
     if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {
       return;
     }
-    WorldAccess::recordContact(world, i, kNoIndex, wall.normal, penetration,
-                               separating, wall.source);
+    WorldAccess::recordStored(world, i, kNoIndex, wall.normal, penetration,
+                              separating, wall.source);
   }
 
   static bool isTarget(const detail::ParticleBase<S, Dim>& p) {

@@ -166,6 +166,11 @@ struct Resolver {
         normal, static_cast<const typename C::Normal*>(nullptr));
     return separatingVelocityAlong(world, a, b, stored);
   }
+  // The same with the normal in its stored form.
+  static S separatingVelocityStored(W& world, uint8_t a, uint8_t b,
+                                    const typename C::Normal& normal) {
+    return separatingVelocityAlong(world, a, b, normal);
+  }
 
   // dot(v, normal) for a contact normal (a Vec, or a contact's stored form
   // Contact::Normal): the same result, without the multiplies by the zeros
@@ -325,11 +330,12 @@ struct Resolver {
       deltaV = -separating;
       if (!detail::isZero(restitution) || stacked) {
         // The closing velocity that this step's accelerations can have
-        // built, along the normal (decoded from its stored form).
-        const V& normal = detail::normalVector(contact.normal);
-        const S alongA = WorldAccess::accelerationAlong(world, a, normal);
+        // built, along the normal.
+        const S alongA =
+            WorldAccess::accelerationAlong(world, a, contact.normal);
         const S alongB =
-            movesB ? WorldAccess::accelerationAlong(world, *b, normal) : S();
+            movesB ? WorldAccess::accelerationAlong(world, *b, contact.normal)
+                   : S();
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing

@@ -74,7 +74,7 @@ class WorldAccess {
   template <class W>
   static typename W::Scalar accelerationAlong(
       const W& world, const typename W::ParticleType& p,
-      const typename W::Vec& direction) {
+      const typename W::ContactType::Normal& direction) {
     return world.accelerationAlong(p, direction);
   }
   template <class W>
@@ -138,6 +138,14 @@ class WorldAccess {
                             typename W::Scalar penetration,
                             typename W::Scalar separating, uint8_t source) {
     world.recordContact(a, b, normal, penetration, separating, source);
+  }
+  // The same with the normal in the contacts' stored form (Contact::Normal).
+  template <class W>
+  static void recordStored(W& world, uint8_t a, uint8_t b,
+                           const typename W::ContactType::Normal& normal,
+                           typename W::Scalar penetration,
+                           typename W::Scalar separating, uint8_t source) {
+    world.recordStored(a, b, normal, penetration, separating, source);
   }
   // For the resolver's pool policy (Resolver::slotFor()).
   template <class W>

@@ -719,9 +719,12 @@ class World
 
 
   // dot(acceleration of p in this step, direction): its accumulator plus
-  // the uniform acceleration; 0 for an immovable particle. (Contact normals
-  // along an axis take no multiply: Contacts/Contact.hpp.)
-  S accelerationAlong(const ParticleType& p, const Vec& direction) const {
+  // the uniform acceleration; 0 for an immovable particle. The direction is
+  // a contact normal in its stored form (ContactType::Normal), so that one
+  // product routine serves all contact arithmetic. (Contact normals along
+  // an axis take no multiply: Contacts/Contact.hpp.)
+  S accelerationAlong(const ParticleType& p,
+                      const typename ContactType::Normal& direction) const {
     if (p.isStatic()) return S();
     if (kForces == 0) {
       return detail::alongNormal(UniformStore::uniform(), direction);
@@ -775,9 +778,13 @@ class World
   // (largest separating velocity) gives way to a more severe one; either
   // way one contact is dropped, counted in stats().dropped, and
   // WorldError::kContactsDropped is set.
-  void addContact(uint8_t a, uint8_t b, const Vec& normal, S penetration,
+  void addContact(uint8_t a, uint8_t b, const Vec& unit, S penetration,
                   uint8_t source) {
-    const S separating = Resolver<World>::separatingVelocity(*this, a, b, normal);
+    // (In the stored form from here on: converted once.)
+    const typename ContactType::Normal& normal = detail::storedNormal(
+        unit, static_cast<const typename ContactType::Normal*>(nullptr));
+    const S separating =
+        Resolver<World>::separatingVelocityStored(*this, a, b, normal);
     // isIdle(), the accelerations computed only when needed.
     if (!detail::isPositive(penetration) && !detail::isNegative(separating) &&
         detail::isZero(accelerationAlong(particleAt(a), normal)) &&
@@ -785,7 +792,7 @@ class World
          detail::isZero(accelerationAlong(particleAt(b), normal)))) {
       return;
     }
-    recordContact(a, b, normal, penetration, separating, source);
+    recordStored(a, b, normal, penetration, separating, source);
   }
 
   // A contact that can be left out: touching (or within the margin), not
@@ -805,11 +812,19 @@ class World
   // addContact() for a generator that has computed the separating velocity
   // dot(va - vb, normal) itself (more cheaply) and has decided to keep the
   // contact: it is recorded as it is.
+  void recordContact(uint8_t a, uint8_t b, const Vec& unit, S penetration,
+                     S separating, uint8_t source) {
+    recordStored(a, b,
+                 detail::storedNormal(unit, static_cast<const typename
+                                      ContactType::Normal*>(nullptr)),
+                 penetration, separating, source);
+  }
+  // recordContact() with the normal in its stored form (ContactType::Normal).
   // (Out of line: several generators call it, and its rare full-pool path
   // would fill their loops' registers.)
-  TINYPARTICLE_NOINLINE void recordContact(uint8_t a, uint8_t b,
-                                           const Vec& normal, S penetration,
-                                           S separating, uint8_t source) {
+  TINYPARTICLE_NOINLINE void recordStored(
+      uint8_t a, uint8_t b, const typename ContactType::Normal& normal,
+      S penetration, S separating, uint8_t source) {
     if (SleepStore::settler() != nullptr) {
       wakeFor(a, b, penetration, separating);
     }
