@@ -201,11 +201,10 @@ struct PlaneConstraint {
 
   // Particle i within the margin of the wall (its offset: see
   // touchAxis(), the bound, or minus it for a negative normal). Its
-  // penetration, separating velocity and acceleration along the normal are
-  // that coordinate of its position (less or plus its radius), velocity and
-  // acceleration, with the normal's sign (exactly what the dot products
-  // give); the sign does not matter for the acceleration, only whether it
-  // is zero (WorldAccess::isIdle<W>()).
+  // penetration and separating velocity along the normal are that
+  // coordinate of its position (less or plus its radius) and velocity, with
+  // the normal's sign (exactly what the dot products give); the world
+  // leaves out an idle contact (World::addStored()).
   template <class W>
   TINYPARTICLE_NOINLINE static void touch(
       W& world, const Wall<typename W::ContactType::Normal>& wall,
@@ -221,14 +220,9 @@ struct PlaneConstraint {
       at = -at;
       separating = -separating;
     }
-    const S penetration = wall.offset - (at - p.radius);
-    const S acceleration =
-        p.accumulated().*along + WorldAccess::uniformComponent(world, along);
-    if (WorldAccess::isIdle<W>(penetration, separating, acceleration, S())) {
-      return;
-    }
-    WorldAccess::recordStored(world, i, kNoIndex, wall.normal, penetration,
-                              separating, wall.source);
+    WorldAccess::addStored(world, i, kNoIndex, wall.normal,
+                           wall.offset - (at - p.radius), separating,
+                           wall.source);
   }
 
   static bool isTarget(const detail::ParticleBase<S, Dim>& p) {

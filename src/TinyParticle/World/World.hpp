@@ -712,11 +712,6 @@ class World
   // its accumulator: the world's gravity (addGravity()), m/s^2.
   Vec uniformAcceleration() const { return UniformStore::uniform(); }
  private:
-  // One component of it (&Vec::x, &Vec::y...), without copying the vector.
-  S uniformComponent(S Vec::*component) const {
-    return UniformStore::uniformComponent(component);
-  }
-
 
   // dot(acceleration of p in this step, direction): its accumulator plus
   // the uniform acceleration; 0 for an immovable particle. The direction is
@@ -783,9 +778,25 @@ class World
     // (In the stored form from here on: converted once.)
     const typename ContactType::Normal& normal = detail::storedNormal(
         unit, static_cast<const typename ContactType::Normal*>(nullptr));
-    const S separating =
-        Resolver<World>::separatingVelocityStored(*this, a, b, normal);
-    // isIdle(), the accelerations computed only when needed.
+    addStored(a, b, normal, penetration,
+              Resolver<World>::separatingVelocityStored(*this, a, b, normal),
+              source);
+  }
+
+  // addContact() for a generator that has computed the separating velocity
+  // dot(va - vb, normal) itself, more cheaply (an axis plane), with the
+  // normal in its stored form. A contact that can be left out is: touching
+  // (or within the margin), not closing, and no acceleration along the
+  // normal (each particle's, see accelerationAlong(), computed only when
+  // the rest holds). Only a push from another contact could make it close
+  // this step, and the next step would catch that. Such contacts are
+  // common (balls side by side on the floor) and leaving them out spares
+  // the pool and the resolver's passes. (A ball resting on another one is
+  // kept: the floor stops the lower one, and then they close.) (Out of
+  // line: the generators share it.)
+  TINYPARTICLE_NOINLINE void addStored(
+      uint8_t a, uint8_t b, const typename ContactType::Normal& normal,
+      S penetration, S separating, uint8_t source) {
     if (!detail::isPositive(penetration) && !detail::isNegative(separating) &&
         detail::isZero(accelerationAlong(particleAt(a), normal)) &&
         (b == kNoIndex ||
@@ -793,20 +804,6 @@ class World
       return;
     }
     recordStored(a, b, normal, penetration, separating, source);
-  }
-
-  // A contact that can be left out: touching (or within the margin), not
-  // closing, and no acceleration along the normal (alongA, alongB: each
-  // particle's, see accelerationAlong()). Only a push from another contact
-  // could make it close this step, and the next step would catch that.
-  // Such contacts are common (balls side by side on the floor) and leaving
-  // them out spares the pool and the resolver's passes. (A ball resting on
-  // another one is kept: the floor stops the lower one, and then they
-  // close.)
-  static bool isIdle(S penetration, S separating, S alongA, S alongB) {
-    return !detail::isPositive(penetration) &&
-           !detail::isNegative(separating) && detail::isZero(alongA) &&
-           detail::isZero(alongB);
   }
 
   // addContact() for a generator that has computed the separating velocity
