@@ -61,14 +61,10 @@ void loop() {
     if (renderer.drawLine(world, Serial)) {
       drawing = false;
       Serial.print(F("t="));
-      // steps / 128 s, to 1/100 s, in integers (no float routine linked).
-      const uint32_t centiseconds = (timing.steps() * 100 + 64) / 128;
-      Serial.print(centiseconds / 100);
-      Serial.print('.');
-      const uint8_t hundredths = uint8_t(centiseconds % 100);
-      if (hundredths < 10) Serial.print('0');
-      Serial.print(hundredths);
-      Serial.print(F(" s  contacts "));
+      // steps / 128 s in whole milliseconds: 1000 / 128 = 125 / 16 (no
+      // float routine linked, and no division).
+      Serial.print((timing.steps() * 125) >> 4);
+      Serial.print(F(" ms  contacts "));
       Serial.print(world.stats().contacts);
       Serial.print(F("  iterations "));
       Serial.println(world.stats().iterations);
