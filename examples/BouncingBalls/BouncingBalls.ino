@@ -42,6 +42,13 @@ const uint32_t kRunSteps = 6 * 128UL;  // 6 s of simulated time
 bool drawing = false;
 uint16_t maxIterations = 0;
 
+// A label and a number (one routine for every field: less flash than a
+// pair of calls at each).
+void printField(const __FlashStringHelper* label, uint32_t value) {
+  Serial.print(label);
+  Serial.print(value);
+}
+
 void setup() {
   Serial.begin(115200);
   while (!Serial);
@@ -60,24 +67,21 @@ void loop() {
   while (drawing && Serial.availableForWrite() >= renderer.lineLength()) {
     if (renderer.drawLine(world, Serial)) {
       drawing = false;
-      Serial.print(F("t="));
       // steps / 128 s in whole milliseconds: 1000 / 128 = 125 / 16 (no
       // float routine linked, and no division).
-      Serial.print((timing.steps() * 125) >> 4);
-      Serial.print(F(" ms  contacts "));
-      Serial.print(world.stats().contacts);
-      Serial.print(F("  iterations "));
-      Serial.println(world.stats().iterations);
+      printField(F("t="), (timing.steps() * 125) >> 4);
+      printField(F(" ms  contacts "), world.stats().contacts);
+      printField(F("  iterations "), world.stats().iterations);
+      Serial.println();
     }
   }
 
   if (timing.steps() >= kRunSteps && !drawing) {
-    Serial.print(F("Done: "));
-    Serial.print(timing.steps());
-    Serial.print(F(" steps, "));
-    Serial.print(timing.slippedSteps());
-    Serial.print(F(" skipped to keep up, most resolver iterations in a step: "));
-    Serial.println(maxIterations);
+    printField(F("Done: "), timing.steps());
+    printField(F(" steps, "), timing.slippedSteps());
+    printField(F(" skipped to keep up, most resolver iterations in a step: "),
+               maxIterations);
+    Serial.println();
     Serial.flush();
     cli();
     sleep_enable();
