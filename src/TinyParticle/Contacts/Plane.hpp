@@ -101,8 +101,9 @@ struct PlaneConstraint {
   // The 2 Dim walls of a box, each as its axis plane would be: the same
   // contacts in the same order (x low, x high, y low, ...), from the same
   // routine, one pass over the particles per wall. (One pass per axis,
-  // noting the particles near either wall in two lists, took 13 % less
-  // time for the walls and 600 B more flash.)
+  // noting the particles near either wall in two lists, took about 250 B
+  // more flash for 5 % fewer cycles per step in the elastic box in Q16.16,
+  // 1 % in float.)
   template <class W>
   static void generateBox(W& world, typename W::ConstraintSlot& slot,
                           uint8_t source) {
@@ -115,15 +116,29 @@ struct PlaneConstraint {
   }
 
  private:
+  // The particles' count as an array size, at least one entry: ISO C++ has
+  // no zero-size arrays.
+  template <class W>
+  struct ParticleSlots {
+    static const uint8_t value =
+        W::kParticleCapacity > 0 ? W::kParticleCapacity : 1;
+  };
+
   // The contacts of the axis plane x[axis] >= offset (positive: normal +e)
-  // or -x[axis] >= offset (normal -e; offset is minus the bound). For each
-  // colliding particle that is neither immovable nor asleep, its
-  // penetration and separating velocity along the normal are that
-  // coordinate of its position (less its radius) and of its velocity, with
-  // the normal's sign (exactly what the dot products give): penetration =
-  // offset - (x - r) for +e, offset - (-x - r) for -e. A particle within
-  // World::contactMargin() makes a contact, unless the world finds it idle
-  // (World::addStored()). (Out of line: one copy for every wall.)
+  // or -x[axis] >= offset (normal -e; offset is minus the bound). A first
+  // pass only tests the colliding particles that are neither immovable nor
+  // asleep, one addition each, and lists those within
+  // World::contactMargin() of the plane: x - r <= offset + margin, or
+  // x + r >= -(offset + margin). (With no call in it, the scan keeps its
+  // values in registers: making each contact inside it took 86 B less
+  // flash and 8 % more cycles per step for the elastic box in Q16.16, 3 %
+  // in float.) Then each
+  // listed particle's penetration and separating velocity along the normal
+  // are that coordinate of its position (less its radius) and of its
+  // velocity, with the normal's sign (exactly what the dot products give):
+  // penetration = offset - (x - r) for +e, offset - (-x - r) for -e; the
+  // world leaves out an idle contact (World::addStored()). (Out of line: one
+  // copy for every wall.)
   template <class W>
   TINYPARTICLE_NOINLINE static void touchWall(W& world, uint8_t axis,
                                               bool positive, S offset,
@@ -134,23 +149,32 @@ struct PlaneConstraint {
     // The coordinate as a member pointer: one load at a fixed offset per
     // particle, where v[axis] would select the component every time.
     S V::*const along = detail::AxisMember<V>::of(axis);
-    V unit;
-    unit.*along = positive ? S(1) : S(-1);
-    const N normal = detail::storedNormal(unit, static_cast<const N*>(nullptr));
-    const S deepest = -W::contactMargin();
+    S limit = offset + W::contactMargin();
+    if (!positive) limit = -limit;
+    uint8_t near[ParticleSlots<W>::value];
+    uint8_t count = 0;
     const P* p = &WorldAccess::particle(world, 0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (!isTarget(*p)) continue;
-      S at = p->position.*along;
-      S separating = p->velocity.*along;
+      const S at = p->position.*along;
+      if (positive ? !(at - p->radius > limit) : !(at + p->radius < limit)) {
+        near[count++] = i;
+      }
+    }
+    if (count == 0) return;
+    V unit;
+    unit.*along = positive ? S(1) : S(-1);
+    const N normal = detail::storedNormal(unit, static_cast<const N*>(nullptr));
+    for (uint8_t k = 0; k < count; ++k) {
+      const P& q = WorldAccess::particle(world, near[k]);
+      S at = q.position.*along;
+      S separating = q.velocity.*along;
       if (!positive) {
         at = -at;
         separating = -separating;
       }
-      const S penetration = offset - (at - p->radius);
-      if (penetration < deepest) continue;
-      WorldAccess::addStored(world, i, kNoIndex, normal, penetration,
-                             separating, source);
+      WorldAccess::addStored(world, near[k], kNoIndex, normal,
+                             offset - (at - q.radius), separating, source);
     }
   }
 
