@@ -120,7 +120,7 @@ class WorldAccess {
 
   // For contact generators: records a contact for this step (see
   // World::addContact), made by constraint slot `source`; recordContact()
-  // when the generator has computed the separating velocity and keeps it.
+  // when the generator has computed the separating velocity.
   template <class W>
   static void addContact(W& world, uint8_t a, uint8_t b,
                          const typename W::Vec& normal,
@@ -135,15 +135,6 @@ class WorldAccess {
     world.recordContact(a, b, normal, penetration, separating, source);
   }
   // The same with the normal in the contacts' stored form (Contact::Normal).
-  template <class W>
-  static void recordStored(W& world, uint8_t a, uint8_t b,
-                           const typename W::ContactType::Normal& normal,
-                           typename W::Scalar penetration,
-                           typename W::Scalar separating, uint8_t source) {
-    world.recordStored(a, b, normal, penetration, separating, source);
-  }
-  // addContact() for a generator that has computed the separating velocity
-  // (World::addStored(): left out when idle).
   template <class W>
   static void addStored(W& world, uint8_t a, uint8_t b,
                         const typename W::ContactType::Normal& normal,

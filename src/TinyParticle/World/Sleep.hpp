@@ -18,7 +18,7 @@
 // is this look and nothing else: no contacts are made.
 //
 // Waking: a contact between a sleeper and an awake particle that is closing
-// or penetrating beyond the margins (World::recordContact) wakes them all,
+// or penetrating beyond the margins (World::addStored) wakes them all,
 // and so does the resolver pushing a sleeper. A pile whose support is
 // knocked away then never hangs in the air, and a disturbed pile reacts as
 // it would have without sleeping: the woken particles get the motion of

@@ -768,8 +768,7 @@ class World
     return constraintAt(constraintIndex).template holds<CollisionParams>();
   }
 
-  // Records a contact for this step, unless it is neither penetrating nor
-  // closing (see isIdle()). When the pool is full the least severe contact
+  // Records a contact for this step, unless it is idle (see addStored()). When the pool is full the least severe contact
   // (largest separating velocity) gives way to a more severe one; either
   // way one contact is dropped, counted in stats().dropped, and
   // WorldError::kContactsDropped is set.
@@ -784,16 +783,24 @@ class World
   }
 
   // addContact() for a generator that has computed the separating velocity
-  // dot(va - vb, normal) itself, more cheaply (an axis plane), with the
-  // normal in its stored form. A contact that can be left out is: touching
-  // (or within the margin), not closing, and no acceleration along the
-  // normal (each particle's, see accelerationAlong(), computed only when
-  // the rest holds). Only a push from another contact could make it close
-  // this step, and the next step would catch that. Such contacts are
-  // common (balls side by side on the floor) and leaving them out spares
-  // the pool and the resolver's passes. (A ball resting on another one is
-  // kept: the floor stops the lower one, and then they close.) (Out of
-  // line: the generators share it.)
+  // dot(va - vb, normal) itself, more cheaply (an axis plane, a cable).
+  void recordContact(uint8_t a, uint8_t b, const Vec& unit, S penetration,
+                     S separating, uint8_t source) {
+    addStored(a, b,
+              detail::storedNormal(unit, static_cast<const typename
+                                   ContactType::Normal*>(nullptr)),
+              penetration, separating, source);
+  }
+  // recordContact() with the normal in its stored form (ContactType::Normal).
+  // A contact that can be left out is: touching (or within the margin), not
+  // closing, and no acceleration along the normal (each particle's, see
+  // accelerationAlong(), computed only when the rest holds). Only a push
+  // from another contact could make it close this step, and the next step
+  // would catch that. Such contacts are common (balls side by side on the
+  // floor) and leaving them out spares the pool and the resolver's passes.
+  // (A ball resting on another one is kept: the floor stops the lower one,
+  // and then they close.) (Out of line: the generators share it, and its
+  // rare full-pool path would fill their loops' registers.)
   TINYPARTICLE_NOINLINE void addStored(
       uint8_t a, uint8_t b, const typename ContactType::Normal& normal,
       S penetration, S separating, uint8_t source) {
@@ -803,25 +810,6 @@ class World
          detail::isZero(accelerationAlong(particleAt(b), normal)))) {
       return;
     }
-    recordStored(a, b, normal, penetration, separating, source);
-  }
-
-  // addContact() for a generator that has computed the separating velocity
-  // dot(va - vb, normal) itself (more cheaply) and has decided to keep the
-  // contact: it is recorded as it is.
-  void recordContact(uint8_t a, uint8_t b, const Vec& unit, S penetration,
-                     S separating, uint8_t source) {
-    recordStored(a, b,
-                 detail::storedNormal(unit, static_cast<const typename
-                                      ContactType::Normal*>(nullptr)),
-                 penetration, separating, source);
-  }
-  // recordContact() with the normal in its stored form (ContactType::Normal).
-  // (Out of line: several generators call it, and its rare full-pool path
-  // would fill their loops' registers.)
-  TINYPARTICLE_NOINLINE void recordStored(
-      uint8_t a, uint8_t b, const typename ContactType::Normal& normal,
-      S penetration, S separating, uint8_t source) {
     if (SleepStore::settler() != nullptr) {
       wakeFor(a, b, penetration, separating);
     }
