@@ -768,10 +768,11 @@ class World
     return constraintAt(constraintIndex).template holds<CollisionParams>();
   }
 
-  // Records a contact for this step, unless it is idle (see addStored()). When the pool is full the least severe contact
-  // (largest separating velocity) gives way to a more severe one; either
-  // way one contact is dropped, counted in stats().dropped, and
-  // WorldError::kContactsDropped is set.
+  // Records a contact for this step, unless it is idle (see addStored()).
+  // When the pool is full the least severe contact (largest separating
+  // velocity) gives way to a more severe one; either way one contact is
+  // dropped, counted in stats().dropped, and WorldError::kContactsDropped
+  // is set.
   void addContact(uint8_t a, uint8_t b, const Vec& unit, S penetration,
                   uint8_t source) {
     // (In the stored form from here on: converted once.)
@@ -809,9 +810,6 @@ class World
         (b == kNoIndex ||
          detail::isZero(accelerationAlong(particleAt(b), normal)))) {
       return;
-    }
-    if (SleepStore::settler() != nullptr) {
-      wakeFor(a, b, penetration, separating);
     }
     // Which slot it takes is the resolver's policy (Resolver::slotFor()).
     const uint8_t slot = Resolver<World>::slotFor(*this, separating);
@@ -1085,6 +1083,7 @@ class World
       ConstraintSlot& c = constraintAt(i);
       if (c.generate != nullptr) c.generate(*this, c, i);
     }
+    wakeInContacts();  // (sets woke() when it wakes the sleepers)
   }
 
   // The integration of this step for a particle woken after it (it was
@@ -1118,17 +1117,10 @@ class World
     return true;
   }
 
-  // A contact of a sleeper that is closing or penetrating wakes everyone.
-  void wakeFor(uint8_t a, uint8_t b, S penetration, S separating) {
-    const bool asleep = particleAt(a).isAsleep() ||
-                        (b < kParticles && particleAt(b).isAsleep());
-    if (asleep &&
-        (penetration > contactMargin() || separating < -speedMargin())) {
-      wakeInContacts();
-    }
-  }
-  // wakeAll() for a contact during the step, through the sleep hook
-  // (Sleeping::hook()): a world that never sleeps links no waking.
+  // A contact of the pool that has a sleeper and is closing or penetrating
+  // wakes everyone: after the generators, and when the resolver is about to
+  // push a sleeper. Through the sleep hook (Sleeping::hook()): a world that
+  // never sleeps links no waking.
   void wakeInContacts() {
     if (SleepStore::settler() != nullptr) SleepStore::settler()(*this, nullptr);
   }
