@@ -127,18 +127,17 @@ struct PlaneConstraint {
   // The contacts of the axis plane x[axis] >= offset (positive: normal +e)
   // or -x[axis] >= offset (normal -e; offset is minus the bound). A first
   // pass only tests the colliding particles that are neither immovable nor
-  // asleep, one addition each, and lists those within
+  // asleep, one subtraction each, and lists those within
   // World::contactMargin() of the plane: x - r <= offset + margin, or
-  // x + r >= -(offset + margin). (With no call in it, the scan keeps its
+  // -x - r <= offset + margin. (With no call in it, the scan keeps its
   // values in registers: making each contact inside it took 86 B less
   // flash and 8 % more cycles per step for the elastic box in Q16.16, 3 %
-  // in float.) Then each
-  // listed particle's penetration and separating velocity along the normal
-  // are that coordinate of its position (less its radius) and of its
-  // velocity, with the normal's sign (exactly what the dot products give):
-  // penetration = offset - (x - r) for +e, offset - (-x - r) for -e; the
-  // world leaves out an idle contact (World::addStored()). (Out of line: one
-  // copy for every wall.)
+  // in float.) Then each listed particle's penetration and separating
+  // velocity along the normal are that coordinate of its position (less
+  // its radius) and of its velocity, with the normal's sign (exactly what
+  // the dot products give): penetration = offset - (x - r) for +e,
+  // offset - (-x - r) for -e; the world leaves out an idle contact
+  // (World::addStored()). (Out of line: one copy for every wall.)
   template <class W>
   TINYPARTICLE_NOINLINE static void touchWall(W& world, uint8_t axis,
                                               bool positive, S offset,
@@ -149,17 +148,15 @@ struct PlaneConstraint {
     // The coordinate as a member pointer: one load at a fixed offset per
     // particle, where v[axis] would select the component every time.
     S V::*const along = detail::AxisMember<V>::of(axis);
-    S limit = offset + W::contactMargin();
-    if (!positive) limit = -limit;
+    const S limit = offset + W::contactMargin();
     uint8_t near[ParticleSlots<W>::value];
     uint8_t count = 0;
     const P* p = &WorldAccess::particle(world, 0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (!isTarget(*p)) continue;
-      const S at = p->position.*along;
-      if (positive ? !(at - p->radius > limit) : !(at + p->radius < limit)) {
-        near[count++] = i;
-      }
+      S at = p->position.*along;
+      if (!positive) at = -at;
+      if (!(at - p->radius > limit)) near[count++] = i;
     }
     if (count == 0) return;
     V unit;
