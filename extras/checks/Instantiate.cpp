@@ -117,6 +117,7 @@ void checkEngine() {
   buildSpring(spring);
   static tinyparticle::BallsWorld<S, D, 4, 8> balls;
   buildBouncingBalls(balls, 4);
+  balls.enableSleeping();
   balls.step(S(1.0 / 256));
   static tinyparticle::World<S, D, 1> bare;
   bare.step(S(1.0 / 256));

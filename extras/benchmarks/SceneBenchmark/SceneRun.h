@@ -6,7 +6,8 @@
 //                     user force
 //   2 pendulum        L = 1 m, theta0 = 0.5 rad, 1 kg (Scenes/Pendulum.hpp)
 //   3 spring          1 kg, k = 100 N/m, 0.1 m beyond rest (Scenes/Spring.hpp)
-//   4 balls           N balls in the 1 m box (Scenes/BouncingBalls.hpp)
+//   4 balls           N balls in the 1 m box (Scenes/BouncingBalls.hpp),
+//                     sleeping on
 //   5 chain           the whip chain of N beads (Scenes/Chain.hpp)
 //   6 rope            7 damped beads between two posts (Scenes/Chain.hpp)
 //   7 pendulum_short  L = 0.05 m, theta0 = 0.5 rad, 0.1 kg
@@ -104,7 +105,10 @@ struct SceneSpec<S, Dim, kSpring, N> {
 template <typename S, uint8_t Dim, uint8_t N>
 struct SceneSpec<S, Dim, kBalls, N> {
   typedef BallsWorld<S, Dim, N> WorldType;
-  static void build(WorldType& world) { buildBouncingBalls(world, N); }
+  static void build(WorldType& world) {
+    buildBouncingBalls(world, N);
+    world.enableSleeping();
+  }
   static double referenceEnergy() { return 0; }  // bounces lose energy
   static const bool kGravity = true;
   static const bool kSpringEnergy = false;

@@ -62,10 +62,11 @@ void run(W& world, const char* name, Report report,
   }
 }
 
-// Eight balls in the box: collisions, walls, gravity.
+// Eight balls in the box: collisions, walls, gravity, sleeping.
 inline void balls(Report report) {
   BallsWorld<Q16_16, 2, 8, 16> world;
   buildBouncingBalls(world, 8);
+  world.enableSleeping();
   run(world, "balls", report);
 }
 

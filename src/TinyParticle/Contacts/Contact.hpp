@@ -205,7 +205,8 @@ template <uint8_t I, uint8_t F, uint8_t Dim>
 struct ContactNormalOf<Fixed<I, F>, Dim>
     : FixedContactNormal<Fixed<I, F>, Dim, I + F == 32> {};
 
-// alongNormal() and pushAlongNormal() for a compact normal.
+// alongNormal(), sumAlongNormal() and pushAlongNormal() for a compact
+// normal.
 template <typename T>
 inline T alongNormal(const Vec<T, 2>& v, const CompactNormal<T, 2>& normal) {
   typedef CompactComponent<T> C;
@@ -216,6 +217,19 @@ inline T alongNormal(const Vec<T, 3>& v, const CompactNormal<T, 3>& normal) {
   typedef CompactComponent<T> C;
   return C::times(v.x, normal.x) + C::times(v.y, normal.y) +
          C::times(v.z, normal.z);
+}
+template <typename T>
+inline T sumAlongNormal(const Vec<T, 2>& u, const Vec<T, 2>& v,
+                        const CompactNormal<T, 2>& normal) {
+  typedef CompactComponent<T> C;
+  return C::times(u.x + v.x, normal.x) + C::times(u.y + v.y, normal.y);
+}
+template <typename T>
+inline T sumAlongNormal(const Vec<T, 3>& u, const Vec<T, 3>& v,
+                        const CompactNormal<T, 3>& normal) {
+  typedef CompactComponent<T> C;
+  return C::times(u.x + v.x, normal.x) + C::times(u.y + v.y, normal.y) +
+         C::times(u.z + v.z, normal.z);
 }
 template <typename T>
 inline void pushAlongNormal(Vec<T, 2>& velocity, Vec<T, 2>& position,
@@ -258,16 +272,6 @@ inline CompactNormal<T, Dim> storedNormal(const Vec<T, Dim>& normal,
   CompactNormal<T, Dim> stored;
   stored = normal;
   return stored;
-}
-
-// The normal as a vector (a Vec is returned as it is).
-template <typename S, uint8_t Dim>
-inline const Vec<S, Dim>& normalVector(const Vec<S, Dim>& normal) {
-  return normal;
-}
-template <typename T, uint8_t Dim>
-inline Vec<T, Dim> normalVector(const CompactNormal<T, Dim>& normal) {
-  return normal.decoded();
 }
 
 }  // namespace detail

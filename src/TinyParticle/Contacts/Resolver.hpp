@@ -166,6 +166,11 @@ struct Resolver {
         normal, static_cast<const typename C::Normal*>(nullptr));
     return separatingVelocityAlong(world, a, b, stored);
   }
+  // The same with the normal in its stored form.
+  static S separatingVelocityStored(W& world, uint8_t a, uint8_t b,
+                                    const typename C::Normal& normal) {
+    return separatingVelocityAlong(world, a, b, normal);
+  }
 
   // dot(v, normal) for a contact normal (a Vec, or a contact's stored form
   // Contact::Normal): the same result, without the multiplies by the zeros
@@ -298,22 +303,6 @@ struct Resolver {
       contact.separatingVelocity = S();
       return;
     }
-    // A's share of each correction: its inverse mass over the sum. Exact
-    // without a division when one side is immovable or the masses are equal.
-    // (Two different masses take the compact reciprocal: slower than the
-    // fast divide, but small, and set-up links it anyway for the inverse
-    // masses; a step that never divides then links no fast divide. Both
-    // move, so both inverse masses are positive, and so is their sum.)
-    S shareA = S(1);
-    if (!movesA) {
-      shareA = S();
-    } else if (movesB) {
-      shareA = a.inverseMass == b->inverseMass
-                   ? S(0.5)
-                   : a.inverseMass * detail::compactReciprocalOfPositive(
-                                         a.inverseMass + b->inverseMass);
-    }
-
     // 1. Velocity.
     const S separating = contact.separatingVelocity;
     S deltaV = S();
@@ -325,11 +314,12 @@ struct Resolver {
       deltaV = -separating;
       if (!detail::isZero(restitution) || stacked) {
         // The closing velocity that this step's accelerations can have
-        // built, along the normal (decoded from its stored form).
-        const V& normal = detail::normalVector(contact.normal);
-        const S alongA = WorldAccess::accelerationAlong(world, a, normal);
+        // built, along the normal.
+        const S alongA =
+            WorldAccess::accelerationAlong(world, a, contact.normal);
         const S alongB =
-            movesB ? WorldAccess::accelerationAlong(world, *b, normal) : S();
+            movesB ? WorldAccess::accelerationAlong(world, *b, contact.normal)
+                   : S();
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing
@@ -349,10 +339,8 @@ struct Resolver {
           // Otherwise a stack on the floor passes the correction down and up
           // again, halving it each time, and eats the iteration budget.
           if (alongA < S()) {
-            shareA = S(1);
             movesB = false;
           } else if (alongB > S()) {
-            shareA = S();
             movesA = false;
           }
         }
@@ -362,6 +350,24 @@ struct Resolver {
       }
       contact.separatingVelocity = target;
       change.velocity = true;
+    }
+
+    // A's share of each correction: its inverse mass over the sum. Exact
+    // without a division when one side is immovable or the masses are equal.
+    // (Two different masses take the compact reciprocal: slower than the
+    // fast divide, but small, and set-up links it anyway for the inverse
+    // masses; a step that never divides then links no fast divide. Both
+    // move, so both inverse masses are positive, and so is their sum.)
+    // (Worked out after the velocity: a resting contact may have taken a
+    // side's motion away.)
+    S shareA = S(1);
+    if (!movesA) {
+      shareA = S();
+    } else if (movesB) {
+      shareA = a.inverseMass == b->inverseMass
+                   ? S(0.5)
+                   : a.inverseMass * detail::compactReciprocalOfPositive(
+                                         a.inverseMass + b->inverseMass);
     }
 
     // The same split for both corrections: a moves along the normal by its

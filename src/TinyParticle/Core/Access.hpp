@@ -66,7 +66,7 @@ class WorldAccess {
   }
 
   // The step in progress: its dt as a multiplier, and the acceleration a
-  // particle gets in it (World::accelerationAlong, uniformComponent).
+  // particle gets in it along a contact normal (World::accelerationAlong).
   template <class W>
   static const Scaler<typename W::Scalar>& stepScaler(const W& world) {
     return world.stepScaler();
@@ -74,13 +74,8 @@ class WorldAccess {
   template <class W>
   static typename W::Scalar accelerationAlong(
       const W& world, const typename W::ParticleType& p,
-      const typename W::Vec& direction) {
+      const typename W::ContactType::Normal& direction) {
     return world.accelerationAlong(p, direction);
-  }
-  template <class W>
-  static typename W::Scalar uniformComponent(
-      const W& world, typename W::Scalar W::Vec::*component) {
-    return world.uniformComponent(component);
   }
 
   // For the rod solvers: their state bits (World::kRods...), dt's inverse,
@@ -125,7 +120,7 @@ class WorldAccess {
 
   // For contact generators: records a contact for this step (see
   // World::addContact), made by constraint slot `source`; recordContact()
-  // when the generator has computed the separating velocity and keeps it.
+  // when the generator has computed the separating velocity.
   template <class W>
   static void addContact(W& world, uint8_t a, uint8_t b,
                          const typename W::Vec& normal,
@@ -139,6 +134,14 @@ class WorldAccess {
                             typename W::Scalar separating, uint8_t source) {
     world.recordContact(a, b, normal, penetration, separating, source);
   }
+  // The same with the normal in the contacts' stored form (Contact::Normal).
+  template <class W>
+  static void addStored(W& world, uint8_t a, uint8_t b,
+                        const typename W::ContactType::Normal& normal,
+                        typename W::Scalar penetration,
+                        typename W::Scalar separating, uint8_t source) {
+    world.addStored(a, b, normal, penetration, separating, source);
+  }
   // For the resolver's pool policy (Resolver::slotFor()).
   template <class W>
   static void takeContactSlot(W& world) {
@@ -147,12 +150,6 @@ class WorldAccess {
   template <class W>
   static void dropContact(W& world) {
     world.dropContact();
-  }
-  template <class W>
-  static bool isIdle(typename W::Scalar penetration,
-                     typename W::Scalar separating, typename W::Scalar alongA,
-                     typename W::Scalar alongB) {
-    return W::isIdle(penetration, separating, alongA, alongB);
   }
 };
 

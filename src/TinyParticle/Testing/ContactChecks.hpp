@@ -270,6 +270,7 @@ struct ContactChecks {
     static BallsWorld<S, 2, 16, 24> w;  // does not fit on the Nano's stack
     w.clear();
     buildBouncingBalls(w, 16);
+    w.enableSleeping();
     SettleResult r = {0, 0, 0, 0};
     for (uint16_t i = 1; i <= uint16_t(seconds) * 256u; ++i) {
       w.step(S(1.0 / 256));

@@ -18,8 +18,9 @@
 // is this look and nothing else: no contacts are made.
 //
 // Waking: a contact between a sleeper and an awake particle that is closing
-// or penetrating beyond the margins (World::recordContact) wakes them all,
-// and so does the resolver pushing a sleeper. A pile whose support is
+// or penetrating beyond the margins wakes them all, once the step's contacts
+// are made or when the resolver is about to push a sleeper
+// (Sleeping::wakeIfReached()). A pile whose support is
 // knocked away then never hangs in the air, and a disturbed pile reacts as
 // it would have without sleeping: the woken particles get the motion of
 // the step they missed, and the step makes its contacts again with
@@ -101,15 +102,36 @@ struct Sleeping {
 
   // The world's sleep hook, which World::enableSleeping() stores, so that
   // a world that never sleeps links none of this, waking included: with
-  // the step's Scaler, the look before the step (settle()); with none, a
-  // contact during the step has reached a sleeper, and all wake
-  // (World::wakeAll(): with the motion of the step they missed).
+  // the step's Scaler, the look before the step (settle()); with none,
+  // during the step's contacts, the look at them (wakeIfReached()).
   static bool hook(W& world, const Scaler<S>* byDt) {
     if (byDt == nullptr) {
-      world.wakeAll();
+      wakeIfReached(world);
       return false;
     }
     return settle(world, *byDt);
+  }
+
+  // When a contact of the pool has a sleeper and is closing or penetrating
+  // beyond the margins (World::speedMargin(), contactMargin(): what the
+  // resolver would act on), all wake (World::wakeAll(): with the motion of
+  // the step they missed). Looked at once the generators are done, and
+  // again when the resolver is about to push a sleeper (a contact that its
+  // pushes made active). A contact that a full pool dropped wakes no one.
+  static void wakeIfReached(W& world) {
+    if (!WorldAccess::hasSleepers(world)) return;
+    const S closing = -W::speedMargin();
+    const S deep = W::contactMargin();
+    for (uint8_t i = 0; i < world.contactCount(); ++i) {
+      const typename W::ContactType& c = WorldAccess::contact(world, i);
+      const bool asleep =
+          world.particleAt(c.a).isAsleep() ||
+          (c.b < W::kParticleCapacity && world.particleAt(c.b).isAsleep());
+      if (asleep && (c.penetration > deep || c.separatingVelocity < closing)) {
+        world.wakeAll();
+        return;
+      }
+    }
   }
 
   // Returns true when every movable particle sleeps: the step (byDt

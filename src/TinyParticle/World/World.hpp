@@ -716,16 +716,14 @@ class World
   // its accumulator: the world's gravity (addGravity()), m/s^2.
   Vec uniformAcceleration() const { return UniformStore::uniform(); }
  private:
-  // One component of it (&Vec::x, &Vec::y...), without copying the vector.
-  S uniformComponent(S Vec::*component) const {
-    return UniformStore::uniformComponent(component);
-  }
-
 
   // dot(acceleration of p in this step, direction): its accumulator plus
-  // the uniform acceleration; 0 for an immovable particle. (Contact normals
-  // along an axis take no multiply: Contacts/Contact.hpp.)
-  S accelerationAlong(const ParticleType& p, const Vec& direction) const {
+  // the uniform acceleration; 0 for an immovable particle. The direction is
+  // a contact normal in its stored form (ContactType::Normal), so that one
+  // product routine serves all contact arithmetic. (Contact normals along
+  // an axis take no multiply: Contacts/Contact.hpp.)
+  S accelerationAlong(const ParticleType& p,
+                      const typename ContactType::Normal& direction) const {
     if (p.isStatic()) return S();
     if (kForces == 0) {
       return detail::alongNormal(UniformStore::uniform(), direction);
@@ -774,48 +772,48 @@ class World
     return constraintAt(constraintIndex).template holds<CollisionParams>();
   }
 
-  // Records a contact for this step, unless it is neither penetrating nor
-  // closing (see isIdle()). When the pool is full the least severe contact
-  // (largest separating velocity) gives way to a more severe one; either
-  // way one contact is dropped, counted in stats().dropped, and
-  // WorldError::kContactsDropped is set.
-  void addContact(uint8_t a, uint8_t b, const Vec& normal, S penetration,
+  // Records a contact for this step, unless it is idle (see addStored()).
+  // When the pool is full the least severe contact (largest separating
+  // velocity) gives way to a more severe one; either way one contact is
+  // dropped, counted in stats().dropped, and WorldError::kContactsDropped
+  // is set.
+  void addContact(uint8_t a, uint8_t b, const Vec& unit, S penetration,
                   uint8_t source) {
-    const S separating = Resolver<World>::separatingVelocity(*this, a, b, normal);
-    // isIdle(), the accelerations computed only when needed.
+    // (In the stored form from here on: converted once.)
+    const typename ContactType::Normal& normal = detail::storedNormal(
+        unit, static_cast<const typename ContactType::Normal*>(nullptr));
+    addStored(a, b, normal, penetration,
+              Resolver<World>::separatingVelocityStored(*this, a, b, normal),
+              source);
+  }
+
+  // addContact() for a generator that has computed the separating velocity
+  // dot(va - vb, normal) itself, more cheaply (an axis plane, a cable).
+  void recordContact(uint8_t a, uint8_t b, const Vec& unit, S penetration,
+                     S separating, uint8_t source) {
+    addStored(a, b,
+              detail::storedNormal(unit, static_cast<const typename
+                                   ContactType::Normal*>(nullptr)),
+              penetration, separating, source);
+  }
+  // recordContact() with the normal in its stored form (ContactType::Normal).
+  // A contact that can be left out is: touching (or within the margin), not
+  // closing, and no acceleration along the normal (each particle's, see
+  // accelerationAlong(), computed only when the rest holds). Only a push
+  // from another contact could make it close this step, and the next step
+  // would catch that. Such contacts are common (balls side by side on the
+  // floor) and leaving them out spares the pool and the resolver's passes.
+  // (A ball resting on another one is kept: the floor stops the lower one,
+  // and then they close.) (Out of line: the generators share it, and its
+  // rare full-pool path would fill their loops' registers.)
+  TINYPARTICLE_NOINLINE void addStored(
+      uint8_t a, uint8_t b, const typename ContactType::Normal& normal,
+      S penetration, S separating, uint8_t source) {
     if (!detail::isPositive(penetration) && !detail::isNegative(separating) &&
         detail::isZero(accelerationAlong(particleAt(a), normal)) &&
         (b == kNoIndex ||
          detail::isZero(accelerationAlong(particleAt(b), normal)))) {
       return;
-    }
-    recordContact(a, b, normal, penetration, separating, source);
-  }
-
-  // A contact that can be left out: touching (or within the margin), not
-  // closing, and no acceleration along the normal (alongA, alongB: each
-  // particle's, see accelerationAlong()). Only a push from another contact
-  // could make it close this step, and the next step would catch that.
-  // Such contacts are common (balls side by side on the floor) and leaving
-  // them out spares the pool and the resolver's passes. (A ball resting on
-  // another one is kept: the floor stops the lower one, and then they
-  // close.)
-  static bool isIdle(S penetration, S separating, S alongA, S alongB) {
-    return !detail::isPositive(penetration) &&
-           !detail::isNegative(separating) && detail::isZero(alongA) &&
-           detail::isZero(alongB);
-  }
-
-  // addContact() for a generator that has computed the separating velocity
-  // dot(va - vb, normal) itself (more cheaply) and has decided to keep the
-  // contact: it is recorded as it is.
-  // (Out of line: several generators call it, and its rare full-pool path
-  // would fill their loops' registers.)
-  TINYPARTICLE_NOINLINE void recordContact(uint8_t a, uint8_t b,
-                                           const Vec& normal, S penetration,
-                                           S separating, uint8_t source) {
-    if (SleepStore::settler() != nullptr) {
-      wakeFor(a, b, penetration, separating);
     }
     // Which slot it takes is the resolver's policy (Resolver::slotFor()).
     const uint8_t slot = Resolver<World>::slotFor(*this, separating);
@@ -1090,6 +1088,7 @@ class World
       ConstraintSlot& c = constraintAt(i);
       if (c.generate != nullptr) c.generate(*this, c, i);
     }
+    wakeInContacts();  // (sets woke() when it wakes the sleepers)
   }
 
   // The integration of this step for a particle woken after it (it was
@@ -1123,17 +1122,10 @@ class World
     return true;
   }
 
-  // A contact of a sleeper that is closing or penetrating wakes everyone.
-  void wakeFor(uint8_t a, uint8_t b, S penetration, S separating) {
-    const bool asleep = particleAt(a).isAsleep() ||
-                        (b < kParticles && particleAt(b).isAsleep());
-    if (asleep &&
-        (penetration > contactMargin() || separating < -speedMargin())) {
-      wakeInContacts();
-    }
-  }
-  // wakeAll() for a contact during the step, through the sleep hook
-  // (Sleeping::hook()): a world that never sleeps links no waking.
+  // A contact of the pool that has a sleeper and is closing or penetrating
+  // wakes everyone: after the generators, and when the resolver is about to
+  // push a sleeper. Through the sleep hook (Sleeping::hook()): a world that
+  // never sleeps links no waking.
   void wakeInContacts() {
     if (SleepStore::settler() != nullptr) SleepStore::settler()(*this, nullptr);
   }
