@@ -57,15 +57,19 @@ class WorldCore {
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
       if (p.inUse()) continue;
-      const uint8_t generation = p.generation;
-      p = ParticleType();
-      p.generation = generation;
+      // Every field but the generation (the handles' count goes on),
+      // each written once: a whole new particle would be zeroed first.
       p.position = position;
+      p.velocity = CoreVec();
       p.inverseMass = inverseMass;
       p.radius = radius;
-      p.flags = ParticleType::kInUse | ParticleType::kCollides;
-      if (inverseMass == S()) p.flags |= ParticleType::kStatic;
-      return ParticleId(i, generation);
+      p.damping = 0;
+      p.flags = detail::isZero(inverseMass)
+                    ? uint8_t(ParticleType::kInUse | ParticleType::kCollides |
+                              ParticleType::kStatic)
+                    : uint8_t(ParticleType::kInUse | ParticleType::kCollides);
+      p.clearAccumulated();
+      return ParticleId(i, p.generation);
     }
     mError |= WorldError::kParticlesFull;
     TINYPARTICLE_DEBUG_PRINT("particle pool full");
