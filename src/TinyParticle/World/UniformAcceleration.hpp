@@ -10,26 +10,8 @@
 
 #include <stdint.h>
 
-#include "../Math/Float.hpp"
-#include "../Math/Vec.hpp"
-#include "../Math/Zero.hpp"
-
 namespace tinyparticle {
 namespace detail {
-
-// sum += a. A float add is a library call, and an acceleration such as
-// gravity has one nonzero component: the zeros are skipped (the set-up of
-// the Float lever: two calls less). Fixed point adds in a few instructions.
-template <class V>
-inline void addAcceleration(V& sum, const V& a) {
-  sum += a;
-}
-template <uint8_t Dim>
-inline void addAcceleration(Vec<Float, Dim>& sum, const Vec<Float, Dim>& a) {
-  for (uint8_t k = 0; k < Dim; ++k) {
-    if (!isZero(a[k])) sum[k] += a[k];
-  }
-}
 
 template <class V>
 struct UniformAcceleration {
@@ -40,7 +22,7 @@ struct UniformAcceleration {
   template <typename S>
   S uniformComponent(S V::*component) const { return mUniform.*component; }
   void clearUniform() { mUniform = V(); }
-  void addUniform(const V& a) { addAcceleration(mUniform, a); }
+  void addUniform(const V& a) { mUniform += a; }
 };
 
 // During a step, the step's Scaler (the multiply by dt) for the contact
