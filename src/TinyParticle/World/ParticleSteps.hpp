@@ -6,6 +6,7 @@
 #pragma once
 
 #include <stdint.h>
+#include <string.h>
 
 #include "../Configuration.hpp"
 #include "../Core/Handle.hpp"
@@ -24,12 +25,15 @@ template <typename S>
 inline S finiteLimit(S x) {
   return x > S() ? S::largest() : (x < S() ? S::lowest() : S());
 }
-// Float: from the sign bit and the mantissa, with no float compare (a
-// library call on AVR).
+// Float: from the bits, with no float compare (a library call on AVR). An
+// infinity's bits less one are the largest finite float of its sign.
 inline Float finiteLimit(Float x) {
   const uint32_t bits = floatBits(x);
   if ((bits & 0x007FFFFFul) != 0) return Float();  // NaN
-  return (bits & 0x80000000ul) != 0 ? Float::lowest() : Float::largest();
+  const uint32_t limit = bits - 1;
+  float f;
+  memcpy(&f, &limit, sizeof(f));
+  return Float(f);
 }
 
 // x += d, for the step's many adds to a particle's velocity and position.

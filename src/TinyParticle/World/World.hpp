@@ -151,9 +151,9 @@ class World
   // A particle of the given mass (kg, > 0) and radius (m). It collides
   // (with planes and, if enabled, with other particles); see setCollides().
   // Returns an invalid id and sets WorldError::kParticlesFull when the pool
-  // is full (kBadArgument for a mass <= 0).
+  // is full (kBadArgument for a mass <= 0 or NaN).
   ParticleId addParticle(const Vec& position, S mass, S radius = S()) {
-    if (mass <= S()) {
+    if (!detail::isPositive(mass)) {
       mError |= WorldError::kBadArgument;
       return ParticleId();
     }
