@@ -254,12 +254,14 @@ def table_newtons(r):
 
 # The two builds of the sketch: its default calibration, and the one a user
 # makes from the sensors' measured table (the same points as the model's
-# sensors, so the sensing is as right as the ADC allows).
+# sensors, so the sensing is as right as the ADC allows). The first prints
+# the sketch's default output (the Serial Plotter's lines), the second its
+# ASCII frames (HAPTIC_FRAMES), so that the loop is measured with both.
 CALIBRATIONS = {
     "function1": {"label": "Function 1", "suffix": "", "build": "HapticLever", "defines": [],
                   "newtons": function1_newtons},
     "table": {"label": "Table D.1", "suffix": "_table", "build": "HapticLeverTable",
-              "defines": ["-DHAPTIC_FSR_TABLE"], "newtons": table_newtons},
+              "defines": ["-DHAPTIC_FSR_TABLE", "-DHAPTIC_FRAMES"], "newtons": table_newtons},
 }
 CAL = CALIBRATIONS["function1"]  # the build being measured
 
