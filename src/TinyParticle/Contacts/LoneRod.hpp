@@ -97,17 +97,18 @@ struct LoneRod {
     V d;
     Eq::span(particles, a, kAnchored ? kAnchorIndex : b, link, d);
     const V& u = link.direction;
+    // (Taken once, before either solve: taken in each, it was linked twice.)
     V relative;
+    const V& w = ends.relativeVelocity(relative);
     S amount;
     S error = S();
     if (pass.positions) {
       bool turning;
-      amount = Eq::positionSpeed(d, ends.relativeVelocity(relative), u, link,
-                                 pass, false, error, turning);
+      amount = Eq::positionSpeed(d, w, u, link, pass, false, error, turning);
       if (turning) pass.turned = true;
     } else {
       Eq::setDirection(d, link, pass.turned);
-      amount = -detail::dotOutOfLine(ends.relativeVelocity(relative), u);
+      amount = -detail::dotOutOfLine(w, u);
     }
     const S share = ends.shareOfA();
     ends.pushApart(&P::velocity, u, amount, share);
