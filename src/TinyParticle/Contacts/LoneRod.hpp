@@ -150,8 +150,9 @@ struct LoneRod {
     // step never divides elsewhere links no fast divide.
     S shareOfA() const {
       if (!bothMove()) return S();
-      return a->inverseMass * detail::reciprocalByMultiplies(a->inverseMass +
-                                                             b->inverseMass);
+      return a->inverseMass * detail::reciprocalByMultiplies(
+                                  detail::sumOutOfLine(a->inverseMass,
+                                                       b->inverseMass));
     }
     // A change `amount` of the ends' relative (field: velocity or
     // position) along u: all of it to the one movable end, or `share` of

@@ -251,8 +251,13 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   return true;
 }
 
-// a + b out of line, for the rare paths below: a Fixed sum saturates in
-// about 14 B of code where it is written out, a call takes 4.
+// a + b out of line, for rare paths (a fast turn, a rod whose two ends
+// move): a Fixed sum saturates in about 14 B of code where it is written
+// out, a call takes 4. Other scalars: the plain sum.
+template <typename S>
+inline S sumOutOfLine(S a, S b) {
+  return a + b;
+}
 template <uint8_t I, uint8_t F>
 TINYPARTICLE_NOINLINE Fixed<I, F> sumOutOfLine(Fixed<I, F> a, Fixed<I, F> b) {
   return a + b;
