@@ -97,17 +97,18 @@ struct LoneRod {
     V d;
     Eq::span(particles, a, kAnchored ? kAnchorIndex : b, link, d);
     const V& u = link.direction;
+    // (Taken once, before either solve: taken in each, it was linked twice.)
     V relative;
+    const V& w = ends.relativeVelocity(relative);
     S amount;
     S error = S();
     if (pass.positions) {
       bool turning;
-      amount = Eq::positionSpeed(d, ends.relativeVelocity(relative), u, link,
-                                 pass, false, error, turning);
+      amount = Eq::positionSpeed(d, w, u, link, pass, false, error, turning);
       if (turning) pass.turned = true;
     } else {
       Eq::setDirection(d, link, pass.turned);
-      amount = -detail::dotOutOfLine(ends.relativeVelocity(relative), u);
+      amount = -detail::dotOutOfLine(w, u);
     }
     const S share = ends.shareOfA();
     ends.pushApart(&P::velocity, u, amount, share);
@@ -115,16 +116,15 @@ struct LoneRod {
   }
 
  private:
-  // A rod's ends (b null for an anchor), and those that move (null where
-  // the end is immovable).
+  // A rod's ends that move (null where the end is immovable: an anchor, or
+  // a particle of no inverse mass). Only these are kept: what a solve
+  // needs of an end is that it moves.
   struct Ends {
     TINYPARTICLE_ALWAYS_INLINE Ends(P* particles, uint8_t ia, uint8_t ib)
-        : a(&particles[ia]),
-          b(kAnchored || ib == kAnchorIndex ? nullptr : &particles[ib]),
-          movingA(a->isStatic() ? nullptr : a),
-          movingB(b == nullptr || b->isStatic() ? nullptr : b) {}
-    P* a;
-    P* b;
+        : movingA(moving(&particles[ia])),
+          movingB(kAnchored || ib == kAnchorIndex ? nullptr
+                                                  : moving(&particles[ib])) {}
+    static P* moving(P* p) { return p->isStatic() ? nullptr : p; }
     P* movingA;
     P* movingB;
 
@@ -149,8 +149,9 @@ struct LoneRod {
     // step never divides elsewhere links no fast divide.
     S shareOfA() const {
       if (!bothMove()) return S();
-      return a->inverseMass * detail::reciprocalByMultiplies(a->inverseMass +
-                                                             b->inverseMass);
+      return movingA->inverseMass *
+             detail::reciprocalByMultiplies(detail::sumOutOfLine(
+                 movingA->inverseMass, movingB->inverseMass));
     }
     // A change `amount` of the ends' relative (field: velocity or
     // position) along u: all of it to the one movable end, or `share` of

@@ -251,6 +251,18 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   return true;
 }
 
+// a + b out of line, for rare paths (a fast turn, a rod whose two ends
+// move): a Fixed sum saturates in about 14 B of code where it is written
+// out, a call takes 4. Other scalars: the plain sum.
+template <typename S>
+inline S sumOutOfLine(S a, S b) {
+  return a + b;
+}
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_NOINLINE Fixed<I, F> sumOutOfLine(Fixed<I, F> a, Fixed<I, F> b) {
+  return a + b;
+}
+
 // 2 / (1 + sqrt(1 - 2h)) for h >= 0: what a rod that turns by t = sqrt(2h)
 // radians in a step drops along itself, in units of the second order
 // form's t^2 / 2 (Contacts/RodSolver.hpp, positionSpeed()). From h = 1/2
@@ -292,26 +304,26 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   if (!(h > S(1.0 / 32))) {
     S p = S();
     if (kTerms >= 4) p = h * S(0.875);
-    if (kTerms >= 3) p = h * (S(0.625) + p);
-    if (kTerms >= 2) p = h * (S(0.5) + p);
-    return S(1) + h * (S(0.5) + p);
+    if (kTerms >= 3) p = h * sumOutOfLine(S(0.625), p);
+    if (kTerms >= 2) p = h * sumOutOfLine(S(0.5), p);
+    return sumOutOfLine(S(1), h * sumOutOfLine(S(0.5), p));
   }
   if (!(h < S(0.5))) return S(2);
-  S m = S(1) - (h + h);
+  S m = S(1) - sumOutOfLine(h, h);
   if (F <= 10) {  // as unitBySteps() for coarse formats
-    const S r = reciprocalByMultiplies(S(1) + m * inverseSqrt(m));
-    return r + r;
+    const S r = reciprocalByMultiplies(sumOutOfLine(S(1), m * inverseSqrt(m)));
+    return sumOutOfLine(r, r);
   }
   uint8_t halvings = 0;
   while (m < S(0.25)) {
-    m += m;
-    m += m;
+    m = sumOutOfLine(m, m);
+    m = sumOutOfLine(m, m);
     ++halvings;
   }
   S root = m * inverseSqrtFromOne(m);
   for (; halvings > 0; --halvings) root = half(root);
-  const S r = reciprocalByMultiplies(S(1) + root);
-  return r + r;
+  const S r = reciprocalByMultiplies(sumOutOfLine(S(1), root));
+  return sumOutOfLine(r, r);
 }
 
 }  // namespace detail
