@@ -20,7 +20,15 @@ class SceneRandom {
   // A whole number in [-limit, limit].
   int16_t symmetric(int16_t limit) {
     const uint16_t span = uint16_t(2 * limit + 1);
-    return int16_t(int16_t(next() % span) - limit);
+    const uint16_t x = next();
+    // A span of 257 (every scene's limit of 128) without the division
+    // routine: 256 = -1 (mod 257), so x = 256 h + l leaves l - h (mod 257).
+    if (span == 257) {
+      int16_t r = int16_t(x & 0xFF) - int16_t(x >> 8);
+      if (r < 0) r += 257;
+      return int16_t(r - limit);
+    }
+    return int16_t(int16_t(x % span) - limit);
   }
 
  private:
