@@ -465,30 +465,32 @@ class World
   // walls. False if the pool has no free slot.
   bool addBox(const Vec& low, const Vec& high, S restitution) {
     requireContacts();
-    BoxParams<S, Dim> box;
+    const ConstraintId id = newScenery(
+        restitution, KindOf<BoxParams<S, Dim>, ConstraintParams>::value,
+        &PlaneConstraint<S, Dim>::template generateBox<World>);
+    if (!id.isValid()) return false;
+    BoxParams<S, Dim>& box =
+        constraintAt(id.index).params.template as<BoxParams<S, Dim> >();
     box.low = low;
     box.high = high;
-    return placeConstraint(
-               kAllIndex, kNoIndex, restitution, box,
-               &PlaneConstraint<S, Dim>::template generateBox<World>)
-        .isValid();
+    return true;
   }
 
   // Collisions between all pairs of colliding particles.
   ConstraintId addCollisions(S restitution) {
     requireContacts();
-    return placeConstraint(kAllIndex, kNoIndex, restitution,
-                           CollisionParams(),
-                           &CollisionConstraint<World>::generate);
+    return newScenery(restitution,
+                      KindOf<CollisionParams, ConstraintParams>::value,
+                      &CollisionConstraint<World>::generate);
   }
   // The same, and pairs that pass through each other within a step are
   // found at any speed (swept contacts, Contacts/Collisions.hpp); costs more
   // per step. Use one of the two.
   ConstraintId addSweptCollisions(S restitution) {
     requireContacts();
-    return placeConstraint(kAllIndex, kNoIndex, restitution,
-                           CollisionParams(),
-                           &CollisionConstraint<World>::generateSwept);
+    return newScenery(restitution,
+                      KindOf<CollisionParams, ConstraintParams>::value,
+                      &CollisionConstraint<World>::generateSwept);
   }
 
   // A contact generator of the sketch's own (extras/doc/design.md, "Adding
@@ -961,6 +963,23 @@ class World
     SketchGenerator sketch;
     sketch.object = generator;
     return placeForce(a, b, sketch, &Runner::apply);
+  }
+
+  typedef typename ConstraintSlot::Params ConstraintParams;
+  // The slot of a generator for every particle with no parameters to copy
+  // here (the box, collisions), kind and runner set; null when the pool is
+  // full. (Out of line: a scene of balls adds two, and the inlined slot
+  // search cost about 45 B each time.)
+  TINYPARTICLE_NOINLINE ConstraintId newScenery(
+      S restitution, uint8_t kind,
+      typename ConstraintSlot::Generate generate) {
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, kAllIndex, kNoIndex, restitution);
+    if (c != nullptr) {
+      c->kind = kind;
+      c->generate = generate;
+    }
+    return id;
   }
 
   template <class G>
