@@ -165,6 +165,12 @@ struct CompactNormal<T, 2> {
   Vec<T, 2> decoded() const {
     return Vec<T, 2>(Component::decode(x), Component::decode(y));
   }
+  // The unit normal +e (positive) or -e along an axis, encoded directly.
+  static CompactNormal alongAxis(uint8_t axis, bool positive) {
+    CompactNormal n;
+    (axis == 0 ? n.x : n.y) = positive ? Component::kOne : -Component::kOne;
+    return n;
+  }
 };
 
 template <typename T>
@@ -184,6 +190,12 @@ struct CompactNormal<T, 3> {
   Vec<T, 3> decoded() const {
     return Vec<T, 3>(Component::decode(x), Component::decode(y),
                      Component::decode(z));
+  }
+  static CompactNormal alongAxis(uint8_t axis, bool positive) {
+    CompactNormal n;
+    (axis == 0 ? n.x : (axis == 1 ? n.y : n.z)) =
+        positive ? Component::kOne : -Component::kOne;
+    return n;
   }
 };
 
@@ -272,6 +284,21 @@ inline CompactNormal<T, Dim> storedNormal(const Vec<T, Dim>& normal,
   CompactNormal<T, Dim> stored;
   stored = normal;
   return stored;
+}
+
+// The stored form of the unit normal +e or -e along an axis (an axis
+// plane's): no encoding at run time.
+template <typename S, uint8_t Dim>
+inline Vec<S, Dim> axisNormal(uint8_t axis, bool positive,
+                              const Vec<S, Dim>*) {
+  Vec<S, Dim> unit;
+  unit[axis] = positive ? S(1) : S(-1);
+  return unit;
+}
+template <typename T, uint8_t Dim>
+inline CompactNormal<T, Dim> axisNormal(uint8_t axis, bool positive,
+                                        const CompactNormal<T, Dim>*) {
+  return CompactNormal<T, Dim>::alongAxis(axis, positive);
 }
 
 }  // namespace detail

@@ -159,9 +159,8 @@ struct PlaneConstraint {
       if (!(at - p->radius > limit)) near[count++] = i;
     }
     if (count == 0) return;
-    V unit;
-    unit.*along = positive ? S(1) : S(-1);
-    const N normal = detail::storedNormal(unit, static_cast<const N*>(nullptr));
+    const N normal =
+        detail::axisNormal(axis, positive, static_cast<const N*>(nullptr));
     for (uint8_t k = 0; k < count; ++k) {
       const P& q = WorldAccess::particle(world, near[k]);
       S at = q.position.*along;
