@@ -29,8 +29,9 @@ namespace tinyparticle {
 template <typename S, uint8_t Dim>
 struct BoxParams {
   static const uint8_t kShape = SlotShape::kNone;
-  Vec<S, Dim> low;
-  Vec<S, Dim> high;
+  // The walls' offsets as axis planes' (low, and minus high, for x, then
+  // y...), worked out once by World::addBox(): the step reads one per wall.
+  S offsets[2 * Dim];
 };
 
 namespace detail {
@@ -108,10 +109,9 @@ struct PlaneConstraint {
   static void generateBox(W& world, typename W::ConstraintSlot& slot,
                           uint8_t source) {
     const BoxParams<S, Dim>& box = InSlot::of<BoxParams<S, Dim> >(slot);
-    for (uint8_t axis = 0; axis < Dim; ++axis) {
-      // As axis planes' offsets: low, and minus high.
-      touchWall(world, axis, true, box.low[axis], source);
-      touchWall(world, axis, false, -box.high[axis], source);
+    for (uint8_t wall = 0; wall < 2 * Dim; ++wall) {
+      touchWall(world, uint8_t(wall >> 1), (wall & 1) == 0,
+                box.offsets[wall], source);
     }
   }
 

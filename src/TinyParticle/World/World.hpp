@@ -471,8 +471,15 @@ class World
     if (!id.isValid()) return false;
     BoxParams<S, Dim>& box =
         constraintAt(id.index).params.template as<BoxParams<S, Dim> >();
-    box.low = low;
-    box.high = high;
+    // (Axis by axis, unrolled: a loop over Vec's operator[] cost more.)
+    box.offsets[0] = low.x;
+    box.offsets[1] = -high.x;
+    box.offsets[2] = low.y;
+    box.offsets[3] = -high.y;
+    if (Dim == 3) {
+      box.offsets[2 * Dim - 2] = low[Dim - 1];
+      box.offsets[2 * Dim - 1] = -high[Dim - 1];
+    }
     return true;
   }
 
