@@ -235,7 +235,15 @@ struct Resolver {
   }
 
   struct Change {
-    V moveA, moveB;     // how far each particle moved (when moved*)
+    // (Left unconstructed, the moves in unions: every resolution writes
+    // each field that is read after it; zeroing them cost 32 B of stores.)
+    Change() {}
+    union {
+      V moveA;          // how far each particle moved (when moved*)
+    };
+    union {
+      V moveB;
+    };
     bool touchedA;      // a's velocity or position changed
     bool touchedB;
     bool movedA;        // a's position changed
