@@ -973,10 +973,10 @@ class World
   }
 
   typedef typename ConstraintSlot::Params ConstraintParams;
-  // The slot of a generator for every particle with no parameters to copy
-  // here (the box, collisions), kind and runner set; null when the pool is
-  // full. (Out of line: a scene of balls adds two, and the inlined slot
-  // search cost about 45 B each time.)
+  // A slot for a generator over every particle (the box, collisions), its
+  // kind and runner set (the caller writes any parameters); an invalid id
+  // and kConstraintsFull when the pool is full. (Out of line: a scene of
+  // balls adds two, and the inlined slot search cost about 45 B each.)
   TINYPARTICLE_NOINLINE ConstraintId newScenery(
       S restitution, uint8_t kind,
       typename ConstraintSlot::Generate generate) {
