@@ -201,7 +201,10 @@ struct RodEquations {
     const V n(-u.y, u.x);
     const S offset = detail::dotOutOfLine(n, d);
     S across = detail::dotOutOfLine(n, w);
-    if (!detail::isZero(offset)) across += offset * invDt;
+    // (Rare: the sum out of line.)
+    if (!detail::isZero(offset)) {
+      across = detail::sumOutOfLine(across, offset * invDt);
+    }
     f.across2 = across * across;
   }
   TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 3>& d,
