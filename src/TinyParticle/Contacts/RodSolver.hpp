@@ -143,7 +143,8 @@ struct RodEquations {
     bool near;
     if (unit) {
       const S q = detail::dotOutOfLine(scaled, scaled);
-      near = q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256);
+      near = detail::isAboveNonNegative(q, S(1 - 1.0 / 256)) &&
+             detail::isBelowNonNegative(q, S(1 + 1.0 / 256));
       if (near) scaled *= S(1.5) - detail::half(q);
     } else {
       // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
@@ -151,8 +152,10 @@ struct RodEquations {
       // rods' half-error moves converge (see Contacts/LoneRod.hpp).
       const S ax = fabs(scaled.x), ay = fabs(scaled.y);
       const S sum = ax + ay;
-      near = ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
-             sum > S(1 - 1.0 / 64) && sum < S(1.5);
+      near = detail::isBelowNonNegative(ax, S(1 + 1.0 / 64)) &&
+             detail::isBelowNonNegative(ay, S(1 + 1.0 / 64)) &&
+             detail::isAboveNonNegative(sum, S(1 - 1.0 / 64)) &&
+             detail::isBelowNonNegative(sum, S(1.5));
     }
     if (near) {
       link.direction = scaled;
@@ -164,7 +167,8 @@ struct RodEquations {
                            Link& link, bool unit) {
     V scaled = d * link.inverseLength;
     const S q = scaled.magnitudeSquared();
-    if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
+    if (detail::isAboveNonNegative(q, S(1 - 1.0 / 256)) &&
+        detail::isBelowNonNegative(q, S(1 + 1.0 / 256))) {
       if (unit) scaled *= S(1.5) - detail::half(q);
       link.direction = scaled;
     } else {
@@ -264,10 +268,12 @@ struct RodEquations {
     if (!unit) error = detail::half(error);  // u = d / L: lone rods
     const S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
     const S halfTurn2 = byDt(drop) * invL;  // (dt s / L)^2 / 2
-    turning = halfTurn2 > S(1.0 / 512);
+    turning = detail::isAboveNonNegative(halfTurn2, S(1.0 / 512));
     if (!turning) return -f.radial - drop;
     // Far off: the offset across u is a move too, not a turn.
-    if (!(fabs(error) * invL < S(1.0 / 16))) return -f.radial;
+    if (!detail::isBelowNonNegative(fabs(error) * invL, S(1.0 / 16))) {
+      return -f.radial;
+    }
     const S speed =
         error * invDt - f.radial - drop * detail::turnDropFactor(halfTurn2);
     error = S();

@@ -276,13 +276,14 @@ inline S turnDropFactor(S h) {
 // Float: as Fixed below, the series up to h = 1/32 with the terms up to
 // h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then the formula,
 // through inverseSqrt() (which a Float world's rods link anyway for their
-// unit vectors: unitBySteps(), above).
+// unit vectors: unitBySteps(), above). h >= 0 is compared by its bits
+// (isAboveNonNegative(), Math/Zero.hpp): no float compare linked.
 inline Float turnDropFactor(Float h) {
   typedef Float S;
-  if (!(h > S(1.0 / 32))) {
+  if (!isAboveNonNegative(h, S(1.0 / 32))) {
     return S(1) + h * (S(0.5) + h * (S(0.5) + h * (S(0.625) + h * S(0.875))));
   }
-  if (!(h < Float(0.5))) return Float(2);
+  if (!isBelowNonNegative(h, Float(0.5))) return Float(2);
   const Float m = Float(1) - (h + h);
   const Float r = reciprocalByMultiplies(Float(1) + m * inverseSqrt(m));
   return r + r;
