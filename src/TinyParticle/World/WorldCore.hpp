@@ -211,17 +211,10 @@ class WorldCore {
                           bool andMove) {
     slots = detail::throughPointer(slots);
     CoreVec uniformStep;
-    if (kMoveHere) {  // no constraints (no rods): written out here
-      for (uint8_t k = 0; k < Dim; ++k) {
-        if (detail::isZero(uniform[k])) continue;
-        const S whole = byDt(uniform[k]);
-        uniformStep[k] = andMove ? whole : detail::half(whole);
-      }
-    } else {  // kickOf(), which moveParticles() links as well
-      const uint8_t part = andMove ? kWholeKick : kFirstHalfKick;
-      uniformStep.x = kickOf(uniform.x, byDt, part);
-      uniformStep.y = kickOf(uniform.y, byDt, part);
-      if (Dim == 3) uniformStep[2] = kickOf(uniform[2], byDt, part);
+    for (uint8_t k = 0; k < Dim; ++k) {
+      if (detail::isZero(uniform[k])) continue;
+      const S whole = byDt(uniform[k]);
+      uniformStep[k] = andMove ? whole : detail::half(whole);
     }
     StepsFor<ParticleType>::Type::template integrate<kMoveHere>(
         slots, count, uniformStep, byDt, andMove, mError);
@@ -234,26 +227,21 @@ class WorldCore {
   void moveParticles(ParticleType* slots, uint8_t count,
                      const CoreVec& uniform, const Scaler<S>& byDt) {
     CoreVec rest;
-    rest.x = kickOf(uniform.x, byDt, kRestOfKick);
-    rest.y = kickOf(uniform.y, byDt, kRestOfKick);
-    if (Dim == 3) rest[2] = kickOf(uniform[2], byDt, kRestOfKick);
+    rest.x = restOfKick(uniform.x, byDt);
+    rest.y = restOfKick(uniform.y, byDt);
+    if (Dim == 3) rest[2] = restOfKick(uniform[2], byDt);
     StepsFor<ParticleType>::Type::movePositions(slots, count, rest, byDt,
                                                 mError);
   }
 
-  // One axis of the uniform acceleration's kick a dt: all of it (a world
-  // without rods), its first half (integrateParticles() with rods) or the
-  // rest (moveParticles()). Out of line, once per axis and step, shared by
-  // both: a loop over the axes picked the component by its index at every
-  // access.
-  enum : uint8_t { kWholeKick, kFirstHalfKick, kRestOfKick };
-  TINYPARTICLE_NOINLINE static S kickOf(S acceleration, const Scaler<S>& byDt,
-                                        uint8_t part) {
+  // One axis of it: the kick a dt less its first half. Out of line, once
+  // per axis and step: a loop over the axes picks the component by its
+  // index at every access.
+  TINYPARTICLE_NOINLINE static S restOfKick(S acceleration,
+                                            const Scaler<S>& byDt) {
     if (detail::isZero(acceleration)) return S();
     const S whole = byDt(acceleration);
-    if (part == kWholeKick) return whole;
-    const S first = detail::half(whole);
-    return part == kFirstHalfKick ? first : whole - first;
+    return whole - detail::half(whole);
   }
 
   // The step's last pass: with constraints (`checkFinite`), what the rods
