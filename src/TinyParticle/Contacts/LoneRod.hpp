@@ -109,7 +109,7 @@ struct LoneRod {
       if (turning) pass.turned = true;
     } else {
       Eq::setDirection(d, link, pass.turned);
-      amount = -detail::dotOutOfLine(w, u);
+      amount = detail::negativeOutOfLine(detail::dotOutOfLine(w, u));
     }
     const S share = ends.shareOfA();
     ends.pushApart(&P::velocity, u, amount, share);
