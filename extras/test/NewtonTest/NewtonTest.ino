@@ -232,6 +232,52 @@ test(q24_8InverseSqrtAndTurnFactor) {
   assertEqual(gFailures, (uint16_t)0);
 }
 
+// The rods' compares of non-negative Float values by their bits
+// (Math/Zero.hpp: isBelowNonNegative, isAboveNonNegative, isEqualPositive)
+// against the float compares, for every class of input the bits order: +0,
+// subnormals, the smallest normal, each constant the rods compare with and
+// its neighbours a unit away, large and the largest finite values, and
+// infinity. NaN, which the float compares call neither below nor above,
+// is above everything (documented there).
+static float floatOfBits(uint32_t bits) {
+  float f;
+  memcpy(&f, &bits, sizeof(f));
+  return f;
+}
+
+test(floatBitComparesMatchTheCompares) {
+  using tinyparticle::detail::floatBits;
+  using tinyparticle::detail::isAboveNonNegative;
+  using tinyparticle::detail::isBelowNonNegative;
+  using tinyparticle::detail::isEqualPositive;
+  const float limits[] = {1.0f / 512, 1.0f / 32,       1.0f / 16,
+                          0.5f,       1.0f - 1.0f / 64, 1.0f + 1.0f / 64,
+                          1.5f,       1.0f - 1.0f / 256, 1.0f + 1.0f / 256};
+  const uint32_t others[] = {0, 1, 0x007FFFFFul, 0x00800000ul,
+                             0x3F800000ul, 0x7149F2CAul, 0x7F7FFFFFul,
+                             0x7F800000ul};
+  const uint8_t kLimits = sizeof(limits) / sizeof(limits[0]);
+  const uint8_t kOthers = sizeof(others) / sizeof(others[0]);
+  uint16_t mismatches = 0;
+  for (uint8_t j = 0; j < kLimits; ++j) {
+    const Float limit(limits[j]);
+    const uint32_t bits = floatBits(limit);
+    for (uint8_t k = 0; k < kOthers + 3; ++k) {
+      // The limit itself and its neighbours, then the other classes.
+      const float x = floatOfBits(k < 3 ? bits + k - 1 : others[k - 3]);
+      if (isBelowNonNegative(Float(x), limit) != (x < limits[j])) ++mismatches;
+      if (isAboveNonNegative(Float(x), limit) != (x > limits[j])) ++mismatches;
+      if (x > 0.0f && isEqualPositive(Float(x), limit) != (x == limits[j])) {
+        ++mismatches;
+      }
+    }
+    const Float nan(floatOfBits(0x7FC00000ul));
+    assertFalse(isBelowNonNegative(nan, limit));
+    assertTrue(isAboveNonNegative(nan, limit));
+  }
+  assertEqual(mismatches, (uint16_t)0);
+}
+
 #if defined(EPOXY_DUINO)
 // Float: the same reductions by powers of two, from 2^-100 to 2^100.
 test(floatInverseSqrtAndTurnFactor) {

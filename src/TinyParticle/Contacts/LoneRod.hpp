@@ -94,7 +94,8 @@ struct LoneRod {
                                           Link& link, Pass& pass) {
     const Ends ends(particles, a, b);
     if (ends.isFixed()) return;
-    V d;
+    detail::Unset<V> span;  // written whole by Eq::span()
+    V& d = span.value;
     Eq::span(particles, a, kAnchored ? kAnchorIndex : b, link, d);
     const V& u = link.direction;
     // (Taken once, before either solve: taken in each, it was linked twice.)
@@ -108,7 +109,7 @@ struct LoneRod {
       if (turning) pass.turned = true;
     } else {
       Eq::setDirection(d, link, pass.turned);
-      amount = -detail::dotOutOfLine(w, u);
+      amount = detail::negativeOutOfLine(detail::dotOutOfLine(w, u));
     }
     const S share = ends.shareOfA();
     ends.pushApart(&P::velocity, u, amount, share);

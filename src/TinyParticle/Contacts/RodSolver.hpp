@@ -143,16 +143,21 @@ struct RodEquations {
     bool near;
     if (unit) {
       const S q = detail::dotOutOfLine(scaled, scaled);
-      near = q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256);
-      if (near) scaled *= S(1.5) - detail::half(q);
+      near = detail::isAboveNonNegative(q, S(1 - 1.0 / 256)) &&
+             detail::isBelowNonNegative(q, S(1 + 1.0 / 256));
+      if (near) {
+        scaled *= detail::differenceOutOfLine(S(1.5), detail::half(q));
+      }
     } else {
       // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
       // 1.5 pass only lengths between 0.7 and 1.12, from which the lone
       // rods' half-error moves converge (see Contacts/LoneRod.hpp).
       const S ax = fabs(scaled.x), ay = fabs(scaled.y);
-      const S sum = ax + ay;
-      near = ax < S(1 + 1.0 / 64) && ay < S(1 + 1.0 / 64) &&
-             sum > S(1 - 1.0 / 64) && sum < S(1.5);
+      const S sum = detail::sumOutOfLine(ax, ay);
+      near = detail::isBelowNonNegative(ax, S(1 + 1.0 / 64)) &&
+             detail::isBelowNonNegative(ay, S(1 + 1.0 / 64)) &&
+             detail::isAboveNonNegative(sum, S(1 - 1.0 / 64)) &&
+             detail::isBelowNonNegative(sum, S(1.5));
     }
     if (near) {
       link.direction = scaled;
@@ -164,8 +169,11 @@ struct RodEquations {
                            Link& link, bool unit) {
     V scaled = d * link.inverseLength;
     const S q = scaled.magnitudeSquared();
-    if (q > S(1 - 1.0 / 256) && q < S(1 + 1.0 / 256)) {
-      if (unit) scaled *= S(1.5) - detail::half(q);
+    if (detail::isAboveNonNegative(q, S(1 - 1.0 / 256)) &&
+        detail::isBelowNonNegative(q, S(1 + 1.0 / 256))) {
+      if (unit) {
+        scaled *= detail::differenceOutOfLine(S(1.5), detail::half(q));
+      }
       link.direction = scaled;
     } else {
       normalizeInto(d, link);
@@ -198,10 +206,13 @@ struct RodEquations {
     // (n . d is u x d to the bit: a product rounds symmetrically). The
     // offset across u is rounding (the direction was set from this span)
     // unless something moved an end since: mostly zero.
-    const V n(-u.y, u.x);
+    const V n(detail::negativeOutOfLine(u.y), u.x);
     const S offset = detail::dotOutOfLine(n, d);
     S across = detail::dotOutOfLine(n, w);
-    if (!detail::isZero(offset)) across += offset * invDt;
+    // (Rare: the sum out of line.)
+    if (!detail::isZero(offset)) {
+      across = detail::sumOutOfLine(across, offset * invDt);
+    }
     f.across2 = across * across;
   }
   TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 3>& d,
@@ -257,16 +268,23 @@ struct RodEquations {
     frameOf(d, w, u, invDt, f);
     const S length = link.length;
     const S invL = link.inverseLength;
-    error = length - f.along;
+    error = detail::differenceOutOfLine(length, f.along);
     if (!unit) error = detail::half(error);  // u = d / L: lone rods
     const S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
     const S halfTurn2 = byDt(drop) * invL;  // (dt s / L)^2 / 2
-    turning = halfTurn2 > S(1.0 / 512);
-    if (!turning) return -f.radial - drop;
+    turning = detail::isAboveNonNegative(halfTurn2, S(1.0 / 512));
+    // (Its sums out of line: Math/Newton.hpp.)
+    if (!turning) {
+      return detail::differenceOutOfLine(detail::negativeOutOfLine(f.radial),
+                                         drop);
+    }
     // Far off: the offset across u is a move too, not a turn.
-    if (!(fabs(error) * invL < S(1.0 / 16))) return -f.radial;
-    const S speed =
-        error * invDt - f.radial - drop * detail::turnDropFactor(halfTurn2);
+    if (!detail::isBelowNonNegative(fabs(error) * invL, S(1.0 / 16))) {
+      return detail::negativeOutOfLine(f.radial);
+    }
+    const S speed = detail::differenceOutOfLine(
+        detail::differenceOutOfLine(error * invDt, f.radial),
+        drop * detail::turnDropFactor(halfTurn2));
     error = S();
     return speed;
   }

@@ -339,6 +339,16 @@ TINYPARTICLE_NOINLINE void removeAlong(Vec<S, N>& v, const Vec<S, N>& u) {
   v.addScaled(u, -dotOutOfLine(v, u));
 }
 
+// Room for a value that a call writes whole before anything reads it
+// (a noinline routine's out-argument): Vec's constructor zeroes it, 16 B
+// of stores per 2D vector that the optimizer cannot drop across the call.
+// `value` is written (by plain, trivial assignment) before it is read.
+template <typename T>
+union Unset {
+  Unset() {}
+  T value;
+};
+
 }  // namespace detail
 
 }  // namespace tinyparticle

@@ -65,6 +65,35 @@ inline bool isPositive(Float x) {
   return (bits & 0x80000000ul) == 0 && bits != 0 && bits <= 0x7F800000ul;
 }
 
+// Compares of values known not to be negative (magnitudes, squares and
+// products of them, and +0, never -0): a < b, a > b, and a == b for positive
+// a and b that are not NaN. A Float compares by its bits, which order as
+// unsigned integers: a few instructions, and no float compare linked. NaN
+// sits above infinity: NaN < b is false as with the compare, NaN > b is
+// true where the compare says false (a step that met a NaN is flagged by
+// its finite checks either way).
+template <typename S>
+inline bool isBelowNonNegative(S a, S b) {
+  return a < b;
+}
+template <typename S>
+inline bool isAboveNonNegative(S a, S b) {
+  return a > b;
+}
+template <typename S>
+inline bool isEqualPositive(S a, S b) {
+  return a == b;
+}
+inline bool isBelowNonNegative(Float a, Float b) {
+  return floatBits(a) < floatBits(b);
+}
+inline bool isAboveNonNegative(Float a, Float b) {
+  return floatBits(a) > floatBits(b);
+}
+inline bool isEqualPositive(Float a, Float b) {
+  return floatBits(a) == floatBits(b);
+}
+
 // isNonFinite(v): a component of v is infinite or NaN. Only a float can
 // be: for fixed point it is false at compile time, so the checks that use
 // it cost nothing there. For a float it is a test of the exponent's bits

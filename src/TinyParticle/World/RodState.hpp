@@ -23,7 +23,7 @@ struct RodState {
   // without the fast divide does it (Math/Newton.hpp). dt > 0: the step
   // refuses others.
   S inverseOf(S dt) {
-    if (!(dt == mDt)) {
+    if (!detail::isEqualPositive(dt, mDt)) {
       mDt = dt;
       mInverseDt = detail::reciprocalByMultiplies(dt);
     }

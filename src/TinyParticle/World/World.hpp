@@ -401,12 +401,13 @@ class World
   // slot is taken.
   ConstraintId addRod(ParticleId a, ParticleId b, S length) {
     if (!(length > S())) return refusedRod();
-    return rodAdded(addLink(a, b, length, S(), &RodSolver<World>::generate));
+    if (!checkPair(a, b)) return ConstraintId();
+    return rodAdded(placeRod(a.index, b.index, Vec(), length));
   }
   ConstraintId addRod(ParticleId a, const Vec& anchor, S length) {
     if (!(length > S())) return refusedRod();
-    return anchoredRodAdded(addAnchoredLink(a, anchor, length, S(),
-                                            &RodSolver<World>::generate));
+    if (!check(a)) return ConstraintId();
+    return anchoredRodAdded(placeRod(a.index, kAnchorIndex, anchor, length));
   }
   // A cable: at most `length` (m) apart; it bounces with `restitution`.
   ConstraintId addCable(ParticleId a, ParticleId b, S length, S restitution) {
@@ -1062,6 +1063,20 @@ class World
       mError |= WorldError::kBadArgument;
       return ConstraintId();
     }
+    return id;
+  }
+  // A rod's slot, written in place: its anchor and length here, the rest
+  // (1 / length, direction, chain links) by startRod(). (Through a local
+  // LinkParams, as the cables take, the set-up zeroed and copied it.)
+  ConstraintId placeRod(uint8_t a, uint8_t b, const Vec& anchor, S length) {
+    ConstraintId id;
+    ConstraintSlot* c = newConstraint(id, a, b, S());
+    if (c == nullptr) return id;
+    LinkParamsType& link = c->params.template as<LinkParamsType>();
+    link.anchor = anchor;
+    link.length = length;
+    c->kind = KindOf<LinkParamsType, typename ConstraintSlot::Params>::value;
+    c->generate = &RodSolver<World>::generate;
     return id;
   }
   // (The length is positive: addRod() checked it. A valid id is the slot
