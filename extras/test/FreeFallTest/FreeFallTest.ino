@@ -109,21 +109,23 @@ struct Checks {
 // u, so after n steps |dv| <= n u / 2 and
 // |dy| <= u (n^2 dt / 2 + n) / 2. For Q16.16, u = 2^-16. For float, u is
 // the spacing of floats near 10 m (2^-20) and near 10 m/s.
+const float kUnitQ16 = 1.0f / 65536, kUnitFloat = 1.0f / 1048576;
+float positionBound(float u, float n) { return u * (n * n / 256 / 2 + n) / 2; }
+float speedBound(float u, float n) { return u * n / 2; }
+
 test(FreeFall_Q16_16) {
   float speedError;
   const float error =
       Checks<Q16_16>::fallError<Checks<Q16_16>::W>(256, 1, &speedError);
-  const float u = 1.0f / 65536, n = 256;
-  assertNear(error, 0.0f, u * (n * n / 256 / 2 + n) / 2);
-  assertNear(speedError, 0.0f, u * n / 2);
+  assertNear(error, 0.0f, positionBound(kUnitQ16, 256));
+  assertNear(speedError, 0.0f, speedBound(kUnitQ16, 256));
 }
 test(FreeFall_Float) {
   float speedError;
   const float error =
       Checks<Float>::fallError<Checks<Float>::W>(256, 1, &speedError);
-  const float u = 1.0f / 1048576, n = 256;
-  assertNear(error, 0.0f, u * (n * n / 256 / 2 + n) / 2);
-  assertNear(speedError, 0.0f, u * n / 2);
+  assertNear(error, 0.0f, positionBound(kUnitFloat, 256));
+  assertNear(speedError, 0.0f, speedBound(kUnitFloat, 256));
 }
 
 // The same fall and bound in a world without force slots (gravity is the
@@ -132,17 +134,15 @@ test(FreeFallWithoutForceSlot_Q16_16) {
   float speedError;
   const float error =
       Checks<Q16_16>::fallError<Checks<Q16_16>::Slotless>(256, 1, &speedError);
-  const float u = 1.0f / 65536, n = 256;
-  assertNear(error, 0.0f, u * (n * n / 256 / 2 + n) / 2);
-  assertNear(speedError, 0.0f, u * n / 2);
+  assertNear(error, 0.0f, positionBound(kUnitQ16, 256));
+  assertNear(speedError, 0.0f, speedBound(kUnitQ16, 256));
 }
 test(FreeFallWithoutForceSlot_Float) {
   float speedError;
   const float error =
       Checks<Float>::fallError<Checks<Float>::Slotless>(256, 1, &speedError);
-  const float u = 1.0f / 1048576, n = 256;
-  assertNear(error, 0.0f, u * (n * n / 256 / 2 + n) / 2);
-  assertNear(speedError, 0.0f, u * n / 2);
+  assertNear(error, 0.0f, positionBound(kUnitFloat, 256));
+  assertNear(speedError, 0.0f, speedBound(kUnitFloat, 256));
 }
 
 // Two calls: 2 g, as two gravity slots summed before. The same bound
@@ -151,9 +151,8 @@ test(SecondGravityAdds_Q16_16) {
   float speedError;
   const float error =
       Checks<Q16_16>::fallError<Checks<Q16_16>::Slotless>(64, 2, &speedError);
-  const float u = 1.0f / 65536, n = 64;
-  assertNear(error, 0.0f, u * (n * n / 256 / 2 + n) / 2);
-  assertNear(speedError, 0.0f, u * n / 2);
+  assertNear(error, 0.0f, positionBound(kUnitQ16, 64));
+  assertNear(speedError, 0.0f, speedBound(kUnitQ16, 64));
 }
 
 test(RemoveForceSwitchesGravityOff_Q16_16) {
