@@ -14,15 +14,22 @@ seconds:
 
 REV must be able to run `tools/bench.py --scenes` itself (every commit since
 that option came does).
+
+A commit's cycles do not change while the toolchain does not (simavr counts
+cycles exactly), so REV's rows are kept in build/bench/baseline/, named by
+the commit, the scene names and the toolchain's versions, and a later run
+with the same three reads them instead of measuring again (delete the
+folder to measure anew).
 """
 import csv
+import hashlib
 import os
 import shutil
 import subprocess
 import sys
 import tempfile
 
-from runner import REPO, BenchError, log
+from runner import REPO, BenchError, log, toolchain
 
 COLUMNS = ["cycles_baseline", "cycles_change_pct", "baseline"]
 KEY = ("scene", "scalar", "dim", "n", "dt_ms", "seconds", "board")
@@ -41,10 +48,37 @@ def commit_of(rev):
     return git("rev-parse", "--short", "--verify", rev + "^{commit}")
 
 
+def cache_path(commit, names):
+    """Where REV's rows for these names are kept (see the top of this file)."""
+    key = repr((git("rev-parse", "--verify", commit + "^{commit}"),
+                sorted(names), sorted(toolchain().items())))
+    digest = hashlib.sha1(key.encode("utf-8")).hexdigest()[:16]
+    return os.path.join(REPO, "build", "bench", "baseline",
+                        "%s-%s.csv" % (commit, digest))
+
+
 def scene_rows(rev, names, jobs):
     """scenes.csv rows of REV for these scene names (bench.py --scenes
-    spelling), measured in a temporary worktree of REV."""
+    spelling), measured in a temporary worktree of REV, or read from the
+    rows kept by an earlier run."""
     commit = commit_of(rev)
+    kept = cache_path(commit, names)
+    if os.path.exists(kept):
+        log("baseline %s: its rows kept in %s" % (commit, os.path.relpath(kept, REPO)))
+        with open(kept, newline="") as f:
+            return list(csv.DictReader(f))
+    rows = measure(commit, names, jobs)
+    os.makedirs(os.path.dirname(kept), exist_ok=True)
+    with open(kept + ".tmp", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()) if rows else [])
+        w.writeheader()
+        w.writerows(rows)
+    os.replace(kept + ".tmp", kept)
+    return rows
+
+
+def measure(commit, names, jobs):
+    """REV's rows, from its own scene benchmark in a temporary worktree."""
     tmp = tempfile.mkdtemp(prefix="tinyparticle-baseline-")
     tree = os.path.join(tmp, "tree")
     out = os.path.join(tmp, "out")
