@@ -140,26 +140,14 @@ struct RodEquations {
                            Link& link, bool unit) {
     const S invL = link.inverseLength;
     V scaled(d.x * invL, d.y * invL);
-    bool near;
-    if (unit) {
-      const S q = detail::dotOutOfLine(scaled, scaled);
-      near = detail::isAboveNonNegative(q, S(1 - 1.0 / 256)) &&
-             detail::isBelowNonNegative(q, S(1 + 1.0 / 256));
-      if (near) {
-        scaled *= detail::differenceOutOfLine(S(1.5), detail::half(q));
-      }
-    } else {
-      // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
-      // 1.5 pass only lengths between 0.7 and 1.12, from which the lone
-      // rods' half-error moves converge (see Contacts/LoneRod.hpp).
-      const S ax = fabs(scaled.x), ay = fabs(scaled.y);
-      const S sum = detail::sumOutOfLine(ax, ay);
-      near = detail::isBelowNonNegative(ax, S(1 + 1.0 / 64)) &&
-             detail::isBelowNonNegative(ay, S(1 + 1.0 / 64)) &&
-             detail::isAboveNonNegative(sum, S(1 - 1.0 / 64)) &&
-             detail::isBelowNonNegative(sum, S(1.5));
-    }
-    if (near) {
+    // One test for both: |d / L|^2 within 1/256 of 1 (unit), or between
+    // 1/2 and 5/4 (lengths 0.71 to 1.12, from which the lone rods'
+    // half-error moves converge: Contacts/LoneRod.hpp). (A bound by |x|
+    // and |y| without the square cost the lone rods' solve 80 B more.)
+    const S q = detail::dotOutOfLine(scaled, scaled);
+    if (detail::isAboveNonNegative(q, unit ? S(1 - 1.0 / 256) : S(0.5)) &&
+        detail::isBelowNonNegative(q, unit ? S(1 + 1.0 / 256) : S(1.25))) {
+      if (unit) scaled *= detail::differenceOutOfLine(S(1.5), detail::half(q));
       link.direction = scaled;
     } else {
       normalizeInto(d, link);
