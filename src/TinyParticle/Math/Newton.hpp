@@ -47,11 +47,24 @@ template <typename S>
 inline S inverseSqrt(S q) {
   return isPositive(q) ? S(1) / sqrt(q) : S();
 }
-// Float: a first guess from the bits (halving the exponent by a shift of
-// the whole word, within 3.5 %), then three Newton steps (1.7e-3, 4.5e-6,
-// then the rounding of the last step: a few units of 2^-24). A subnormal q
-// is scaled by 2^24 first (exact), its root by 2^12 after. Infinity gives
-// 0; q <= 0 and NaN give 0, as for the other scalars.
+// Float, for a normal q > 0 (what the rods and the balls pass: their
+// callers reject or scale the rest, so that they link none of the
+// subnormal's scaling below): a first guess from the bits (halving the
+// exponent by a shift of the whole word, within 3.5 %), then three Newton
+// steps (1.7e-3, 4.5e-6, then the rounding of the last step: a few units
+// of 2^-24).
+TINYPARTICLE_NOINLINE inline Float inverseSqrtOfNormal(Float q) {
+  uint32_t bits = 0x5F3759DFul - (floatBits(q) >> 1);
+  float guess;
+  memcpy(&guess, &bits, sizeof(guess));
+  Float y(guess);
+  const Float halfQ = half(q);
+  for (uint8_t i = 0; i < 3; ++i) y *= Float(1.5) - halfQ * y * y;
+  return y;
+}
+// Float, any q: a subnormal q is scaled by 2^24 first (exact), its root by
+// 2^12 after. Infinity gives 0; q <= 0 and NaN give 0, as for the other
+// scalars.
 TINYPARTICLE_NOINLINE inline Float inverseSqrt(Float q) {
   if (!isPositive(q)) return Float();
   Float scale(1);
@@ -59,13 +72,7 @@ TINYPARTICLE_NOINLINE inline Float inverseSqrt(Float q) {
     q *= Float(16777216.0);
     scale = Float(4096.0);
   }
-  uint32_t bits = 0x5F3759DFul - (floatBits(q) >> 1);
-  float guess;
-  memcpy(&guess, &bits, sizeof(guess));
-  Float y(guess);
-  const Float halfQ = half(q);
-  for (uint8_t i = 0; i < 3; ++i) y *= Float(1.5) - halfQ * y * y;
-  return y * scale;
+  return inverseSqrtOfNormal(q) * scale;
 }
 // Fixed: q is brought into [1/2, 2) by factors of 4 (exact upwards;
 // downwards the halvings round), then a parabola in steps of 2^-8, within
@@ -115,7 +122,7 @@ TINYPARTICLE_NOINLINE inline Float reciprocalByMultiplies(Float x) {
   // One compare: x <= 0 (the sign bit, or +0), subnormals, and from 2^126
   // on (infinity and NaN too) wrap above the range.
   if (floatBits(x) - 0x00800000ul >= 0x7E000000ul) return Float();
-  const Float y = inverseSqrt(x);
+  const Float y = inverseSqrtOfNormal(x);
   Float r = y * y;
   r += r * (Float(1) - x * r);
   return r;
@@ -146,7 +153,7 @@ TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Float, N>& v) {
   memcpy(&scale, &scaleBits, sizeof(scale));
   v *= Float(scale);
   v *= Float(scale);
-  v *= inverseSqrt(dotOutOfLine(v, v));
+  v *= inverseSqrtOfNormal(dotOutOfLine(v, v));  // |v|^2 is about 1 now
   return true;
 }
 
@@ -244,7 +251,7 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   const Float q = dotOutOfLine(v, v);
   // One compare: 0, subnormals, infinity and NaN wrap above the range.
   if (floatBits(q) - 0x00800000ul >= 0x7F000000ul) return false;
-  v *= inverseSqrt(q);
+  v *= inverseSqrtOfNormal(q);
   return true;
 }
 
@@ -308,7 +315,8 @@ inline Float turnDropFactor(Float h) {
   }
   if (!isBelowNonNegative(h, Float(0.5))) return Float(2);
   const Float m = Float(1) - (h + h);
-  const Float r = reciprocalByMultiplies(Float(1) + m * inverseSqrt(m));
+  const Float r =
+      reciprocalByMultiplies(Float(1) + m * inverseSqrtOfNormal(m));
   return r + r;
 }
 // Fixed: up to h = 1/32 (a turn of 1/4 rad) the series 1 + h/2 + h^2/2 +
