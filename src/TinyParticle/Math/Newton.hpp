@@ -334,11 +334,12 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   typedef Fixed<I, F> S;
   const uint8_t kTerms = F < 10 ? 1 : (F < 15 ? 2 : (F < 20 ? 3 : 4));
   if (!(h > S(1.0 / 32))) {
+    // (Horner's rule from the last term kept: no sum with a zero.)
     S p = S();
     if (kTerms >= 4) p = h * S(0.875);
-    if (kTerms >= 3) p = h * sumOutOfLine(S(0.625), p);
-    if (kTerms >= 2) p = h * sumOutOfLine(S(0.5), p);
-    return sumOutOfLine(S(1), h * sumOutOfLine(S(0.5), p));
+    if (kTerms >= 3) p = h * (kTerms > 3 ? sumOutOfLine(S(0.625), p) : S(0.625));
+    if (kTerms >= 2) p = h * (kTerms > 2 ? sumOutOfLine(S(0.5), p) : S(0.5));
+    return sumOutOfLine(S(1), h * (kTerms > 1 ? sumOutOfLine(S(0.5), p) : S(0.5)));
   }
   if (!(h < S(0.5))) return S(2);
   S m = S(1) - sumOutOfLine(h, h);
