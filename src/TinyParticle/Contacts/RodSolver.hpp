@@ -174,13 +174,13 @@ struct RodEquations {
     // else the ends coincide: keep the old direction
   }
 
-  // A rod seen along its direction u: the relative speed along u, the
-  // span along u, and the square of the speed across u, (d - a u) / dt +
+  // A rod seen along its direction u: the relative speed along u (given),
+  // the span along u, and the square of the speed across u, (d - a u) / dt +
   // (w - r u) (in 2D by the dot kernel, detail::dotOutOfLine(): through
   // Vec operations that return vectors the lever's step cost 800 cycles
   // more; the kernel costs none measurable and saves code).
   struct Frame {
-    S radial;   // w . u
+    S radial;   // w . u (the caller's: the lone rods' velocity solve shares it)
     S along;    // d . u
     S across2;  // |(d - a u) / dt + (w - r u)|^2
   };
@@ -188,26 +188,22 @@ struct RodEquations {
                                                  const Vec<S, 2>& w,
                                                  const Vec<S, 2>& u, S invDt,
                                                  Frame& f) {
-    f.radial = detail::dotOutOfLine(w, u);
     f.along = detail::dotOutOfLine(d, u);
     // Across u: along its normal n = (-u.y, u.x), one kernel for all four
     // (n . d is u x d to the bit: a product rounds symmetrically). The
     // offset across u is rounding (the direction was set from this span)
-    // unless something moved an end since: mostly zero.
+    // unless something moved an end since: small, and taken in always (a
+    // test for zero cost more code than it saved cycles).
     const V n(detail::negativeOutOfLine(u.y), u.x);
     const S offset = detail::dotOutOfLine(n, d);
-    S across = detail::dotOutOfLine(n, w);
-    // (Rare: the sum out of line.)
-    if (!detail::isZero(offset)) {
-      across = detail::sumOutOfLine(across, offset * invDt);
-    }
+    const S across = detail::sumOutOfLine(detail::dotOutOfLine(n, w),
+                                          offset * invDt);
     f.across2 = across * across;
   }
   TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 3>& d,
                                                  const Vec<S, 3>& w,
                                                  const Vec<S, 3>& u, S invDt,
                                                  Frame& f) {
-    f.radial = dot(w, u);
     f.along = dot(d, u);
     V q = d;
     q.addScaled(u, -f.along);
@@ -247,12 +243,13 @@ struct RodEquations {
   // square of the turn that decides `turning`: no division, no square root.
   // `unit`: the directions are unit vectors (the chains'), else d / L
   // (lone rods: Contacts/LoneRod.hpp), whose error is half of L - a.
-  static S positionSpeed(const V& d, const V& w, const V& u,
+  static S positionSpeed(const V& d, const V& w, const V& u, S radial,
                          const Link& link, const Pass& pass, bool unit,
                          S& error, bool& turning) {
     const Scaler<S>& byDt = pass.byDt;
     const S invDt = pass.invDt;
     Frame f;
+    f.radial = radial;
     frameOf(d, w, u, invDt, f);
     const S length = link.length;
     const S invL = link.inverseLength;
@@ -647,10 +644,11 @@ struct RodSolver {
   static S rightSide(W& world, const Slot& s, Pass& pass, S& error) {
     const V& u = linkOf(s).direction;
     const V w = relativeVelocity(world, s);
-    if (!pass.positions) return -dot(w, u);
+    const S radial = dot(w, u);
+    if (!pass.positions) return -radial;
     bool turning;
-    S right = Eq::positionSpeed(span(world, s), w, u, linkOf(s), pass, true,
-                                error, turning);
+    S right = Eq::positionSpeed(span(world, s), w, u, radial, linkOf(s), pass,
+                                true, error, turning);
     if (turning && detail::isZero(error)) pass.turned = true;
     if (!pass.first && !turning && !pass.coupled) {
       // Along a chain, what a further pass finds is the motion that a
