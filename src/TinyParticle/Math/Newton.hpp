@@ -296,22 +296,15 @@ inline S turnDropFactor(S h) {
   if (!(h < S(0.5))) return S(2);
   return S(2) / (S(1) + sqrt(S(1) - (h + h)));
 }
-// Float: up to h = 1/32 the series below, with the terms up to h^4 (the
-// rest is below 4.2e-8, 0.7 units of 2^-24), taken as the factor's own
-// equation f = 1 + h f^2 / 2 iterated four times from f = 1: each step
-// makes one more term exact (written out, the series cost 60 B more, and
-// the iteration costs four multiplies more, on the steps that turn by
-// more than 1/16 rad only). Then the formula, through inverseSqrt()
-// (which a Float world's rods link anyway for their unit vectors:
-// unitBySteps(), above). h >= 0 is compared by its bits
+// Float: as Fixed below, the series up to h = 1/32 with the terms up to
+// h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then the formula,
+// through inverseSqrt() (which a Float world's rods link anyway for their
+// unit vectors: unitBySteps(), above). h >= 0 is compared by its bits
 // (isAboveNonNegative(), Math/Zero.hpp): no float compare linked.
 inline Float turnDropFactor(Float h) {
   typedef Float S;
   if (!isAboveNonNegative(h, S(1.0 / 32))) {
-    const S halfH = half(h);
-    S f(1);
-    for (uint8_t i = 0; i < 4; ++i) f = S(1) + halfH * f * f;
-    return f;
+    return S(1) + h * (S(0.5) + h * (S(0.5) + h * (S(0.625) + h * S(0.875))));
   }
   if (!isBelowNonNegative(h, Float(0.5))) return Float(2);
   const Float m = Float(1) - (h + h);
