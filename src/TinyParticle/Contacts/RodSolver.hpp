@@ -192,12 +192,14 @@ struct RodEquations {
     // Across u: along its normal n = (-u.y, u.x), one kernel for all four
     // (n . d is u x d to the bit: a product rounds symmetrically). The
     // offset across u is rounding (the direction was set from this span)
-    // unless something moved an end since: small, and taken in always (a
-    // test for zero cost more code than it saved cycles).
+    // unless something moved an end since: mostly zero.
     const V n(detail::negativeOutOfLine(u.y), u.x);
     const S offset = detail::dotOutOfLine(n, d);
-    const S across = detail::sumOutOfLine(detail::dotOutOfLine(n, w),
-                                          offset * invDt);
+    S across = detail::dotOutOfLine(n, w);
+    // (Rare: the sum out of line.)
+    if (!detail::isZero(offset)) {
+      across = detail::sumOutOfLine(across, offset * invDt);
+    }
     f.across2 = across * across;
   }
   TINYPARTICLE_ALWAYS_INLINE static void frameOf(const Vec<S, 3>& d,
