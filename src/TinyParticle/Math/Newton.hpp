@@ -111,8 +111,9 @@ TINYPARTICLE_ALWAYS_INLINE S reciprocalByMultiplies(S x) {
 }
 // Float: without the float divide (which a sketch whose step never
 // divides then does not link), as the square of 1 / sqrt(x) by
-// inverseSqrt() (linked anyway for the rods' unit vectors: its own Newton's
-// steps cost 168 B more), within about 2e-6, then one Newton step r += r
+// inverseSqrtOfNormal() (linked anyway for the rods' unit vectors: a guess
+// and Newton's steps of its own cost 40 B more), within about 2e-6, then
+// one Newton step r += r
 // (1 - x r), which squares that and leaves the step's rounding: within 2
 // units of 2^-24, for x from 2^-126 (the smallest normal) to below 2^126.
 // Any other x (from 2^126 on, where 1 / x is below the smallest normal;
@@ -239,13 +240,14 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Fixed<I, F>, N>& v) {
   return true;
 }
 
-// Float: v (1 / sqrt(|v|^2)) by inverseSqrt() (a guess from the bits and
-// Newton's steps: linked anyway, for a fast turn's factor), without the
-// balls' scaling by powers of two: a rod's span is metres, far from the
-// ends of the float range. Where |v|^2 is not a normal float (|v| below
-// about 1e-19 or above 1.8e19, or a component infinite or NaN) v has no
-// direction here: false, v unchanged, as for a zero vector (a rod's
-// direction is then kept, or taken as any at set-up).
+// Float: v (1 / sqrt(|v|^2)) by inverseSqrtOfNormal() (a guess from the
+// bits and Newton's steps: linked anyway, for a fast turn's factor and
+// the reciprocal), without the balls' scaling by powers of two: a rod's
+// span is metres, far from the ends of the float range. Where |v|^2 is
+// not a normal float (|v| below about 1e-19 or above 1.8e19, or a
+// component infinite or NaN) v has no direction here: false, v unchanged,
+// as for a zero vector (a rod's direction is then kept, or taken as any at
+// set-up).
 template <uint8_t N>
 TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   const Float q = dotOutOfLine(v, v);
@@ -298,9 +300,10 @@ inline S turnDropFactor(S h) {
 }
 // Float: as Fixed below, the series up to h = 1/32 with the terms up to
 // h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then the formula,
-// through inverseSqrt() (which a Float world's rods link anyway for their
-// unit vectors: unitBySteps(), above). h >= 0 is compared by its bits
-// (isAboveNonNegative(), Math/Zero.hpp): no float compare linked.
+// through inverseSqrtOfNormal() (which a Float world's rods link anyway
+// for their unit vectors: unitBySteps(), above). h >= 0 is compared by
+// its bits (isAboveNonNegative(), Math/Zero.hpp): no float compare
+// linked.
 inline Float turnDropFactor(Float h) {
   typedef Float S;
   if (!isAboveNonNegative(h, S(1.0 / 32))) {
@@ -330,9 +333,12 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
     // (Horner's rule from the last term kept: no sum with a zero.)
     S p = S();
     if (kTerms >= 4) p = h * S(0.875);
-    if (kTerms >= 3) p = h * (kTerms > 3 ? sumOutOfLine(S(0.625), p) : S(0.625));
+    if (kTerms >= 3) {
+      p = h * (kTerms > 3 ? sumOutOfLine(S(0.625), p) : S(0.625));
+    }
     if (kTerms >= 2) p = h * (kTerms > 2 ? sumOutOfLine(S(0.5), p) : S(0.5));
-    return sumOutOfLine(S(1), h * (kTerms > 1 ? sumOutOfLine(S(0.5), p) : S(0.5)));
+    return sumOutOfLine(S(1),
+                        h * (kTerms > 1 ? sumOutOfLine(S(0.5), p) : S(0.5)));
   }
   if (!(h < S(0.5))) return S(2);
   S m = S(1) - sumOutOfLine(h, h);
