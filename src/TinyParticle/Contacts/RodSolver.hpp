@@ -138,8 +138,8 @@ struct RodEquations {
   // sketch) d is normalised in full.
   static void setDirection(const Vec<S, 2>& d,
                            Link& link, bool unit) {
-    const S invL = link.inverseLength;
-    V scaled(d.x * invL, d.y * invL);
+    V scaled;
+    detail::scaledInto(d, link.inverseLength, scaled);
     // One test for both: |d / L|^2 within 1/256 of 1 (unit), or between
     // 1/2 and 5/4 (lengths 0.71 to 1.12, from which the lone rods'
     // half-error moves converge: Contacts/LoneRod.hpp). (The lone rods'
