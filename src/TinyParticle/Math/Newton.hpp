@@ -257,9 +257,10 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   return true;
 }
 
-// out = v k in 2D: for Fixed through Vec's out-of-line *= (one call where
-// two multiplies took two: a rod's direction, 26 B of the Q16.16 lever);
-// for other scalars written out (for Float the copy cost 14 B more).
+// out = v k in 2D: for Fixed through Vec's out-of-line *= (one call in
+// place of two multiplies' calls: a rod's direction, 26 B of the Q16.16
+// lever); for other scalars written out (for Float the copy cost 14 B
+// more).
 template <typename S>
 inline void scaledInto(const Vec<S, 2>& v, S k, Vec<S, 2>& out) {
   out.x = v.x * k;
