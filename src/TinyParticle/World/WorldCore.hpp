@@ -93,25 +93,42 @@ class WorldCore {
     return ParticleId();
   }
 
+  // The particle a handle names, if it is live; else null. Out of line:
+  // every add*() checks its handles, and a sketch looks its particles up
+  // in its loop (World::particle()); written out, each took about 40 bytes.
+  template <class ParticleType>
+  TINYPARTICLE_NOINLINE static ParticleType* liveParticle(
+      ParticleType* slots, uint8_t count, ParticleId id) {
+    if (id.index < count) {
+      ParticleType& p = slots[id.index];
+      if (p.inUse() && p.generation == id.generation) return &p;
+    }
+    return nullptr;
+  }
+
   // Whether a handle names a live particle of the pool; else kStaleHandle
   // is raised (World::check()).
   template <class ParticleType>
-  bool checkParticle(const ParticleType* slots, uint8_t count,
-                     ParticleId id) {
-    if (id.index < count) {
-      const ParticleType& p = slots[id.index];
-      if (p.inUse() && p.generation == id.generation) return true;
-    }
+  bool checkParticle(ParticleType* slots, uint8_t count, ParticleId id) {
+    if (liveParticle(slots, count, id) != nullptr) return true;
     return staleParticle();
   }
 
   // Empties a particle, force or constraint slot; its generation moves on,
   // so the handles to it become stale.
+  // (All bytes zero is every slot's empty state: null pointers, zero
+  // scalars, no flags. One routine for every slot type: a constraint slot's
+  // type names its World, and the copy per type cost 30 bytes.)
   template <class Slot>
   static void freeSlot(Slot& slot) {
-    const uint8_t generation = uint8_t(slot.generation + 1);
-    slot = Slot();
-    slot.generation = generation;
+    wipeSlot(reinterpret_cast<uint8_t*>(&slot), sizeof(Slot),
+             uint8_t(&slot.generation - reinterpret_cast<uint8_t*>(&slot)));
+  }
+  TINYPARTICLE_NOINLINE static void wipeSlot(uint8_t* bytes, uint8_t size,
+                                             uint8_t generationAt) {
+    const uint8_t generation = uint8_t(bytes[generationAt] + 1);
+    for (uint8_t i = 0; i < size; ++i) bytes[i] = 0;
+    bytes[generationAt] = generation;
   }
 
   // A handle that names no live particle (World::check()): kStaleHandle,
@@ -211,10 +228,16 @@ class WorldCore {
                           bool andMove) {
     slots = detail::throughPointer(slots);
     CoreVec uniformStep;
-    for (uint8_t k = 0; k < Dim; ++k) {
-      if (detail::isZero(uniform[k])) continue;
-      const S whole = byDt(uniform[k]);
-      uniformStep[k] = andMove ? whole : detail::half(whole);
+    if (kMoveHere) {
+      // No rods: always the whole kick, and no halves linked.
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (!detail::isZero(uniform[k])) uniformStep[k] = byDt(uniform[k]);
+      }
+    } else {
+      const uint8_t part = andMove ? kWholeKick : kFirstHalfKick;
+      uniformStep.x = kickPart(uniform.x, byDt, part);
+      uniformStep.y = kickPart(uniform.y, byDt, part);
+      if (Dim == 3) uniformStep[2] = kickPart(uniform[2], byDt, part);
     }
     StepsFor<ParticleType>::Type::template integrate<kMoveHere>(
         slots, count, uniformStep, byDt, andMove, mError);
@@ -227,21 +250,28 @@ class WorldCore {
   void moveParticles(ParticleType* slots, uint8_t count,
                      const CoreVec& uniform, const Scaler<S>& byDt) {
     CoreVec rest;
-    rest.x = restOfKick(uniform.x, byDt);
-    rest.y = restOfKick(uniform.y, byDt);
-    if (Dim == 3) rest[2] = restOfKick(uniform[2], byDt);
+    rest.x = kickPart(uniform.x, byDt, kRestOfKick);
+    rest.y = kickPart(uniform.y, byDt, kRestOfKick);
+    if (Dim == 3) rest[2] = kickPart(uniform[2], byDt, kRestOfKick);
     StepsFor<ParticleType>::Type::movePositions(slots, count, rest, byDt,
                                                 mError);
   }
 
-  // One axis of it: the kick a dt less its first half. Out of line, once
-  // per axis and step: a loop over the axes picks the component by its
-  // index at every access.
-  TINYPARTICLE_NOINLINE static S restOfKick(S acceleration,
-                                            const Scaler<S>& byDt) {
+  // One axis of the uniform acceleration's kick a dt: whole, its first
+  // half, or the rest (the whole less the first half). Out of line, once
+  // per axis and step, shared by both halves: a loop over the axes picks
+  // the component by its index at every access.
+  static const uint8_t kWholeKick = 0;
+  static const uint8_t kFirstHalfKick = 1;
+  static const uint8_t kRestOfKick = 2;
+  TINYPARTICLE_NOINLINE static S kickPart(S acceleration,
+                                          const Scaler<S>& byDt,
+                                          uint8_t part) {
     if (detail::isZero(acceleration)) return S();
     const S whole = byDt(acceleration);
-    return whole - detail::half(whole);
+    if (part == kWholeKick) return whole;
+    const S first = detail::half(whole);
+    return part == kFirstHalfKick ? first : whole - first;
   }
 
   // The step's last pass: with constraints (`checkFinite`), what the rods
