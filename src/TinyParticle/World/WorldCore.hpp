@@ -34,16 +34,6 @@ namespace detail {
 template <bool kValue>
 struct Choice {};
 
-// n, hidden from the optimizer like throughPointer() hides an address: a
-// loop over a pool of a few slots then stays a loop, where the compiler
-// would write it out once per slot (a step's short passes over the
-// particles: about 30 bytes a slot).
-inline uint8_t throughRegister(uint8_t n) {
-#if defined(__GNUC__)
-  asm("" : "+r"(n));
-#endif
-  return n;
-}
 // A pool of one slot keeps its constant address (and its pass no loop):
 // hiding it cost the spring scene 1 % of a step.
 template <class Slot>
@@ -76,6 +66,8 @@ class WorldCore {
       if (p.inUse()) continue;
       // Every field but the generation (the handles' count goes on),
       // each written once: a whole new particle would be zeroed first.
+      // (Zeroed by clearBut() and then written, it took 28 bytes more: the
+      // arguments wait in saved registers across the call.)
       p.position = position;
       p.velocity = CoreVec();
       p.inverseMass = inverseMass;
@@ -121,14 +113,21 @@ class WorldCore {
   // type names its World, and the copy per type cost 30 bytes.)
   template <class Slot>
   static void freeSlot(Slot& slot) {
-    wipeSlot(reinterpret_cast<uint8_t*>(&slot), sizeof(Slot),
-             uint8_t(&slot.generation - reinterpret_cast<uint8_t*>(&slot)));
+    clearBut(slot);
+    ++slot.generation;
   }
-  TINYPARTICLE_NOINLINE static void wipeSlot(uint8_t* bytes, uint8_t size,
-                                             uint8_t generationAt) {
-    const uint8_t generation = uint8_t(bytes[generationAt] + 1);
-    for (uint8_t i = 0; i < size; ++i) bytes[i] = 0;
-    bytes[generationAt] = generation;
+  // Every byte of the slot zero but its generation.
+  template <class Slot>
+  static void clearBut(Slot& slot) {
+    uint8_t* const bytes = reinterpret_cast<uint8_t*>(&slot);
+    clearBytesBut(bytes, sizeof(Slot), uint8_t(&slot.generation - bytes));
+  }
+  TINYPARTICLE_NOINLINE static void clearBytesBut(uint8_t* bytes,
+                                                  uint8_t size,
+                                                  uint8_t kept) {
+    for (uint8_t i = 0; i < size; ++i) {
+      if (i != kept) bytes[i] = 0;
+    }
   }
 
   // A handle that names no live particle (World::check()): kStaleHandle,
@@ -209,6 +208,7 @@ class WorldCore {
   template <class ParticleType>
   static void markStatic(ParticleType* slots, uint8_t count) {
     slots = detail::poolThroughPointer(slots, count);
+    if (count > 1) count = detail::throughRegister(count);
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
       p.flags = detail::isZero(p.inverseMass)
