@@ -65,6 +65,15 @@ struct AddTo<Fixed<I, F> > {
   }
 };
 
+template <typename A, typename B>
+struct IsSameScalar {
+  static const bool value = false;
+};
+template <typename A>
+struct IsSameScalar<A, A> {
+  static const bool value = true;
+};
+
 // kAccumulates: the pool's particles keep a force accumulator (a world
 // with force slots); without one, the accumulator's terms fold away.
 template <typename S, uint8_t Dim, bool kAccumulates = true>
@@ -94,10 +103,13 @@ struct ParticleSteps {
       if (!isMoving(p)) continue;
       // One axis at a time, written out: a loop over the axes would select
       // the component at every access.
-      accelerate(p.velocity.x, p.accumulated().x, uniformStep.x, byDt);
-      accelerate(p.velocity.y, p.accumulated().y, uniformStep.y, byDt);
+      accelerateIn<kMoveHere>(p.velocity.x, p.accumulated().x, uniformStep.x,
+                              byDt);
+      accelerateIn<kMoveHere>(p.velocity.y, p.accumulated().y, uniformStep.y,
+                              byDt);
       if (Dim == 3) {
-        accelerate(p.velocity[2], p.accumulated()[2], uniformStep[2], byDt);
+        accelerateIn<kMoveHere>(p.velocity[2], p.accumulated()[2],
+                                uniformStep[2], byDt);
       }
       // (Linked only by a sketch that damps: Core/Particle.hpp.)
       const typename Damping<S, Dim>::Apply damp = Damping<S, Dim>::sApply;
@@ -134,9 +146,9 @@ struct ParticleSteps {
       P& p = particles[i];
       if (!isMoving(p)) continue;
       if (!move(p, byDt, error)) continue;
-      accelerate(p.velocity.x, S(), rest.x, byDt);
-      accelerate(p.velocity.y, S(), rest.y, byDt);
-      if (Dim == 3) accelerate(p.velocity[2], S(), rest[2], byDt);
+      accelerateIn<false>(p.velocity.x, S(), rest.x, byDt);
+      accelerateIn<false>(p.velocity.y, S(), rest.y, byDt);
+      if (Dim == 3) accelerateIn<false>(p.velocity[2], S(), rest[2], byDt);
     }
   }
 
@@ -215,6 +227,26 @@ struct ParticleSteps {
                                                     const Scaler<S>& byDt) {
     if (!isZero(acceleration)) AddTo<S>::add(byDt(acceleration), velocity);
     if (!isZero(uniformStep)) AddTo<S>::add(uniformStep, velocity);
+  }
+  // accelerate() for integrate<kMoveHere>(): written out in a world
+  // without constraints (the float spring has no cycles to spare); else,
+  // for Float, out of line: its two adds written out were about 90 bytes
+  // an axis, and a world with rods spends its cycles on them.
+  template <bool kWrittenOut>
+  TINYPARTICLE_ALWAYS_INLINE static void accelerateIn(S& velocity,
+                                                      S acceleration,
+                                                      S uniformStep,
+                                                      const Scaler<S>& byDt) {
+    if (kWrittenOut || !kFloatScalar) {
+      accelerate(velocity, acceleration, uniformStep, byDt);
+    } else {
+      accelerateOutOfLine(velocity, acceleration, uniformStep, byDt);
+    }
+  }
+  static const bool kFloatScalar = IsSameScalar<S, Float>::value;
+  TINYPARTICLE_NOINLINE static void accelerateOutOfLine(
+      S& velocity, S acceleration, S uniformStep, const Scaler<S>& byDt) {
+    accelerate(velocity, acceleration, uniformStep, byDt);
   }
   TINYPARTICLE_ALWAYS_INLINE static void moveAxis(S& position, S velocity,
                                                   const Scaler<S>& byDt) {
