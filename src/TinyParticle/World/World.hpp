@@ -917,8 +917,12 @@ class World
                   "this World has no constraint slot: World<S, Dim, "
                   "particles, forces, constraints, contacts> needs "
                   "constraints > 0 for rods, cables, planes and collisions");
+    // (Through a pointer the compiler cannot see through: the slot's
+    // fields, written here and by the caller, take a short store each
+    // where a constant address took four bytes.)
+    ConstraintSlot* const slots = detail::throughPointer(&constraintAt(0));
     for (uint8_t i = 0; i < kConstraints; ++i) {
-      ConstraintSlot& c = constraintAt(i);
+      ConstraintSlot& c = slots[i];
       if (c.inUse()) continue;
       c.a = a;
       c.b = b;

@@ -146,6 +146,9 @@ class WorldCore {
   CoreForceSlot* newForce(CoreForceSlot* slots, uint8_t count, ForceId& id,
                           uint8_t a, uint8_t b, uint8_t kind,
                           typename CoreForceSlot::Apply apply) {
+    // (Through a hidden pointer: a short store per field, here and in the
+    // caller's copy of the parameters.)
+    slots = detail::throughPointer(slots);
     for (uint8_t i = 0; i < count; ++i) {
       CoreForceSlot& f = slots[i];
       if (f.inUse()) continue;
