@@ -65,9 +65,12 @@ class WorldCore {
       ParticleType& p = slots[i];
       if (p.inUse()) continue;
       // Every field but the generation (the handles' count goes on): its
-      // bytes zeroed by a loop written out here, smaller than the stores
-      // of the zero fields (a call of clearBytesBut() took 28 bytes more:
-      // the arguments wait in saved registers across it), then the rest.
+      // bytes zeroed (see freeSlot()) by a loop written out here, smaller
+      // than the stores of the zero fields (a call of clearBytesBut() took
+      // 28 bytes more: the arguments wait in saved registers across it),
+      // then the rest.
+      static_assert(sizeof(ParticleType) < 256,
+                    "a particle's bytes are counted in 8 bits");
       uint8_t* const bytes = reinterpret_cast<uint8_t*>(&p);
       const uint8_t kept = uint8_t(&p.generation - bytes);
       for (uint8_t k = 0; k < sizeof(ParticleType); ++k) {
@@ -111,8 +114,10 @@ class WorldCore {
   // Empties a particle, force or constraint slot; its generation moves on,
   // so the handles to it become stale.
   // (All bytes zero is every slot's empty state: null pointers, zero
-  // scalars, no flags. One routine for every slot type: a constraint slot's
-  // type names its World, and the copy per type cost 30 bytes.)
+  // scalars, no flags; a scalar's zero is all zero bytes, as Fixed's,
+  // Float's and any IEEE float's. One routine for every slot type: a
+  // constraint slot's type names its World, and the copy per type cost 30
+  // bytes.)
   template <class Slot>
   static void freeSlot(Slot& slot) {
     clearBut(slot);
@@ -121,6 +126,7 @@ class WorldCore {
   // Every byte of the slot zero but its generation.
   template <class Slot>
   static void clearBut(Slot& slot) {
+    static_assert(sizeof(Slot) < 256, "a slot's bytes are counted in 8 bits");
     uint8_t* const bytes = reinterpret_cast<uint8_t*>(&slot);
     clearBytesBut(bytes, sizeof(Slot), uint8_t(&slot.generation - bytes));
   }
