@@ -149,28 +149,19 @@ struct PlaneConstraint {
     // particle, where v[axis] would select the component every time.
     S V::*const along = detail::AxisMember<V>::of(axis);
     const S limit = offset + W::contactMargin();
-    uint8_t near[ParticleSlots<W>::value];
-    uint8_t count = 0;
+    const N normal =
+        detail::axisNormal(axis, positive, static_cast<const N*>(nullptr));
     const P* p = &WorldAccess::particle(world, 0);
     for (uint8_t i = 0; i < W::kParticleCapacity; ++i, ++p) {
       if (!isTarget(*p)) continue;
       S at = p->position.*along;
       if (!positive) at = -at;
-      if (!(at - p->radius > limit)) near[count++] = i;
-    }
-    if (count == 0) return;
-    const N normal =
-        detail::axisNormal(axis, positive, static_cast<const N*>(nullptr));
-    for (uint8_t k = 0; k < count; ++k) {
-      const P& q = WorldAccess::particle(world, near[k]);
-      S at = q.position.*along;
-      S separating = q.velocity.*along;
-      if (!positive) {
-        at = -at;
-        separating = -separating;
-      }
-      WorldAccess::addStored(world, near[k], kNoIndex, normal,
-                             offset - (at - q.radius), separating, source);
+      const S low = at - p->radius;
+      if (low > limit) continue;
+      S separating = p->velocity.*along;
+      if (!positive) separating = -separating;
+      WorldAccess::addStored(world, i, kNoIndex, normal, offset - low,
+                             separating, source);
     }
   }
 
