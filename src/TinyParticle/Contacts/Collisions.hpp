@@ -230,7 +230,6 @@ struct CollisionConstraint {
     } list;
     Entry* const entries = list.at;
     Entry* end = entries;
-    bool moved = false;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
       const uint8_t i = uint8_t(order[k] ^ k);  // (see sortOrder())
       const P& p = world.particleAt(i);
@@ -240,26 +239,24 @@ struct CollisionConstraint {
       while (e != entries && x < e[-1].x) {
         *e = e[-1];
         --e;
-        moved = true;
       }
       e->x = x;
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
     // Keep the new order for the next step: the colliding particles
-    // sorted, then the others (any order will do for them). When all
-    // collide and none moved, it is the order already kept.
-    if (count > 0 && (moved || count < W::kParticleCapacity)) {
+    // sorted, then the others (any order will do for them). (Written every
+    // step, all of it: a test for "nothing moved" cost more flash than the
+    // stores' cycles are worth.)
+    {
       uint8_t k = 0;
       for (const Entry* e = entries; e != end; ++e, ++k) {
         order[k] = uint8_t(e->index ^ k);
       }
-      if (count < W::kParticleCapacity) {
-        for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-          if ((world.particleAt(i).flags & both) != both) {
-            order[k] = uint8_t(i ^ k);
-            ++k;
-          }
+      for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+        if ((world.particleAt(i).flags & both) != both) {
+          order[k] = uint8_t(i ^ k);
+          ++k;
         }
       }
     }
@@ -285,12 +282,13 @@ struct CollisionConstraint {
   // in this step (by AxisSpeed's bound) than the smallest moving one's
   // radius. Past it, without swept contacts, the step raises
   // WorldError::kTunnelling; with them, it is `fast`, and the spread takes
-  // in the longest move along x too. Out of line, with a pointer walk: in
-  // the sort loop it cost three times as much (spilled registers). The
+  // in the longest move along x too. A loop of its own, with a pointer
+  // walk: in the sort loop it cost three times as much (spilled
+  // registers). (Left to the compiler: out of line it took 98 B more.) The
   // speeds are AxisSpeed's magnitudes: for fixed point the raw bits,
   // unsigned, with no saturating arithmetic in the loop.
   template <bool kSwept>
-  TINYPARTICLE_NOINLINE static S survey(W& world, bool& fast) {
+  static S survey(W& world, bool& fast) {
     typedef detail::AxisSpeed<S> Speed;
     typedef typename Speed::Sum Sum;
     const uint8_t both = P::kInUse | P::kCollides;

@@ -131,7 +131,7 @@ struct PlaneConstraint {
   // box in Q16.16, 3 % in float, for 158 B more flash.) (Out of line: one
   // copy for every wall.)
   template <class W>
-  TINYPARTICLE_NOINLINE static void touchWall(W& world, uint8_t axis,
+  static void touchWall(W& world, uint8_t axis,
                                               bool positive, S offset,
                                               uint8_t source) {
     typedef Vec<S, Dim> V;

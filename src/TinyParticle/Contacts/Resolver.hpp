@@ -75,15 +75,17 @@ struct Resolver {
     }
     // The particles in more than one contact: a resolution changes other
     // contacts only through them (a ball alone on the floor touches none).
-    // For each particle slot, in how many contacts it is: 0, 1, or 2 for
-    // more (a byte each: a bit per slot cost shifts and masks on every
-    // look, more than the bytes save); b = kNoIndex (scenery) counts none.
+    // For each particle slot, whether it is in no contact (0), one (1) or
+    // more (above 1) (a byte each: a bit per slot cost shifts and masks on
+    // every look, more than the bytes save); b = kNoIndex (scenery) counts
+    // none.
     uint8_t uses[kSlots];
     for (uint8_t i = 0; i < kSlots; ++i) uses[i] = 0;
     for (uint8_t j = 0; j < count; ++j) {
       const uint8_t a = contacts[j].a, b = contacts[j].b;
-      if (a < kSlots && uses[a] < 2) ++uses[a];
-      if (b < kSlots && uses[b] < 2) ++uses[b];
+      // (0, then 1, 3, 7...: shifted in, no compare.)
+      if (a < kSlots) uses[a] = uint8_t(uses[a] << 1 | 1);
+      if (b < kSlots) uses[b] = uint8_t(uses[b] << 1 | 1);
     }
     // A contact whose particles are in no other contact changes no other
     // one, and no other one changes it: it is resolved once, in one pass,
@@ -223,11 +225,12 @@ struct Resolver {
     bool velocity;      // velocities changed
   };
 
-  // velocity += normal * dv, move = normal * dx, position += move: one
-  // call per particle (dv or dx may be 0: nothing to multiply then).
-  TINYPARTICLE_NOINLINE static void push(P& p,
-                                         const typename C::Normal& normal,
-                                         S dv, S dx, V& move) {
+  // velocity += normal * dv, move = normal * dx, position += move (dv or
+  // dx may be 0: nothing to multiply then). (Left to the compiler: called
+  // from resolveAny()'s loop over the two sides only, out of line it took
+  // 54 B more.)
+  static void push(P& p, const typename C::Normal& normal, S dv, S dx,
+                   V& move) {
     detail::pushAlongNormal(p.velocity, p.position, move, normal, dv, dx);
   }
 
@@ -245,7 +248,7 @@ struct Resolver {
   // again up to the cap. What they leave is picked up by the next step.
   // (One pass for both, out of line: it keeps the resolve loop's frame
   // small.)
-  TINYPARTICLE_NOINLINE static uint8_t updateAndFindWorst(
+  static uint8_t updateAndFindWorst(
       W& world, const uint8_t* linked, uint8_t count, uint8_t current,
       const Change& change) {
     C* const contacts = &WorldAccess::contact(world, 0);
@@ -262,11 +265,11 @@ struct Resolver {
            b == change.touched[0] || b == change.touched[1])) {
         for (uint8_t side = 0; side < 2; ++side) {
           const uint8_t moved = change.moved[side];
-          if (moved == a) {
-            c->penetration -= along(change.move[side], c->normal);
-          } else if (moved == b) {
-            c->penetration += along(change.move[side], c->normal);
-          }
+          if (moved != a && moved != b) continue;
+          // (a moved along the normal: shallower; b: deeper.)
+          const S shift = along(change.move[side], c->normal);
+          c->penetration = moved == a ? c->penetration - shift
+                                      : c->penetration + shift;
         }
         if (change.velocity) {
           c->separatingVelocity = separatingVelocity(world, *c);
@@ -295,12 +298,8 @@ struct Resolver {
     if (a.isAsleep() || (b != nullptr && b->isAsleep())) {
       WorldAccess::wakeInContacts(world);
     }
-    if (!movesA && !movesB) {
-      change.touched[0] = change.touched[1] = kAllIndex;
-      contact.penetration = S();
-      contact.separatingVelocity = S();
-      return;
-    }
+    // (Neither moving, as between two immovable particles, takes the same
+    // path: nothing is pushed, and the contact ends resolved.)
     // 1. Velocity.
     const S separating = contact.separatingVelocity;
     S deltaV = S();
@@ -321,14 +320,16 @@ struct Resolver {
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing
-            // velocity that the relative acceleration built in this step.
-            target = -(separating * restitution);
-            S built = byDt(alongA - alongB);
+            // velocity that the relative acceleration built in this step
+            // (restitution times the rest; one multiply).
+            S bounced = deltaV;
+            const S built = byDt(alongA - alongB);
             if (built < S()) {
-              target += restitution * built;
-              if (target < S()) target = S();
+              bounced += built;
+              if (bounced < S()) bounced = S();
             }
-            deltaV = target - separating;
+            target = restitution * bounced;
+            deltaV += target;
           }
         } else if (stacked) {
           // Resting, one ball on another: the one that the acceleration
