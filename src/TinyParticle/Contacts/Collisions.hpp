@@ -362,7 +362,8 @@ struct CollisionConstraint {
           continue;
         }
         // The lower slot index is a, as a sweep in slot order would have it.
-        const uint8_t first = i < j ? i : j, second = i < j ? j : i;
+        const bool inOrder = i < j;
+        const uint8_t first = inOrder ? i : j, second = inOrder ? j : i;
         // In a fast step, a pair that was apart when it began and met in
         // it gets the contact of its first touch, also when it ends the
         // step overlapping: there the normal from the end positions would
@@ -370,7 +371,8 @@ struct CollisionConstraint {
         // here, not from pair(): this is the deepest point of the step's
         // stack.)
         if (!kSwept || !sweptPair(world, first, second, outer, source)) {
-          pair(world, first, second, outer, source);
+          pair(world, first, second, inOrder ? p : q, inOrder ? q : p, outer,
+               source);
         }
       }
     }
@@ -388,11 +390,12 @@ struct CollisionConstraint {
   }
 
   // Particles i < j whose boxes overlap: outer = r1 + r2 + margin.
-  static void pair(W& world, uint8_t i, uint8_t j, S outer, uint8_t source) {
-    const P& a = world.particleAt(i);
-    const P& b = world.particleAt(j);
+  // (a and b are those particles, which the sweep has at hand.)
+  static void pair(W& world, uint8_t i, uint8_t j, const P& a, const P& b,
+                   S outer, uint8_t source) {
     if (a.isResting() && b.isResting()) return;  // immovable or asleep
-    const S reach = a.radius + b.radius;
+    // r1 + r2, from outer (the radii are far from saturating).
+    const S reach = outer - W::contactMargin();
     const V delta = a.position - b.position;
     const S distanceSquared = delta.magnitudeSquared();
     if (distanceSquared > outer * outer) return;
