@@ -331,7 +331,7 @@ struct CollisionConstraint {
     // 100 cycles each. Fixed point adds them again for each particle: its
     // adds are cheap, and the compare and copies of the cache took 110 B.
     S radius = S(), reach = margin, bound = spread;
-    for (uint8_t m = 0; m + 1 < count; ++m) {
+    for (uint8_t m = 0; uint8_t(m + 1) < count; ++m) {
       const uint8_t i = entries[m].index;
       const P& p = world.particleAt(i);
       if (ScalarTraits<S>::kCoarse || !(p.radius == radius)) {
