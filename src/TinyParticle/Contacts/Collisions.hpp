@@ -69,20 +69,10 @@
 namespace tinyparticle {
 namespace detail {
 
-// Whether a > b, for magnitudes (a, b >= 0).
-template <typename S>
-struct MagnitudeOrder {
-  static bool greater(S a, S b) { return a > b; }
-};
-// Non-negative floats (fabs() gives them) order as their bit patterns do as
-// unsigned integers, NaN above infinity (floatBits(), Math/Zero.hpp): a
-// compare of four bytes instead of a call to the float compare (the bound
-// then costs the survey a few cycles per particle more than |vx| + |vy|
-// did).
-template <>
-struct MagnitudeOrder<Float> {
-  static bool greater(Float a, Float b) { return floatBits(a) > floatBits(b); }
-};
+// (Magnitudes compare by isAboveNonNegative(), Math/Zero.hpp: for floats
+// their bit patterns as unsigned integers, a compare of four bytes instead
+// of a call to the float compare; the bound then costs the survey a few
+// cycles per particle more than |vx| + |vy| did.)
 
 // A bound on the speed |v| for the speed limit, without a square root: the
 // largest axis's |v_k| plus half of the others' (a >= b >= c >= 0:
@@ -96,14 +86,14 @@ struct AxisSpeed {
   typedef S Sum;
   static S of(const Vec<S, 2>& v) {
     const S a = fabs(v.x), b = fabs(v.y);
-    return MagnitudeOrder<S>::greater(a, b) ? a + half(b) : b + half(a);
+    return isAboveNonNegative(a, b) ? a + half(b) : b + half(a);
   }
   static S of(const Vec<S, 3>& v) {
     S a = fabs(v.x), b = fabs(v.y), c = fabs(v.z);
-    if (MagnitudeOrder<S>::greater(b, a)) {
+    if (isAboveNonNegative(b, a)) {
       const S t = a; a = b; b = t;
     }
-    if (MagnitudeOrder<S>::greater(c, a)) {
+    if (isAboveNonNegative(c, a)) {
       const S t = a; a = c; c = t;
     }
     return a + half(b + c);
