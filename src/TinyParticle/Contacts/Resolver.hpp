@@ -246,8 +246,9 @@ struct Resolver {
   // that round to one unit of the scalar (or, in float, that halve forever
   // between a ball and the floor under it) would be resolved again and
   // again up to the cap. What they leave is picked up by the next step.
-  // (One pass for both, out of line: it keeps the resolve loop's frame
-  // small.)
+  // (One pass for both: the two passes apart, each out of line, took 26 B
+  // more. Left to the compiler: from its one caller, out of line it took
+  // 58 B more.)
   static uint8_t updateAndFindWorst(
       W& world, const uint8_t* linked, uint8_t count, uint8_t current,
       const Change& change) {
