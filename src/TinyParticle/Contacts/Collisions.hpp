@@ -69,20 +69,10 @@
 namespace tinyparticle {
 namespace detail {
 
-// Whether a > b, for magnitudes (a, b >= 0).
-template <typename S>
-struct MagnitudeOrder {
-  static bool greater(S a, S b) { return a > b; }
-};
-// Non-negative floats (fabs() gives them) order as their bit patterns do as
-// unsigned integers, NaN above infinity (floatBits(), Math/Zero.hpp): a
-// compare of four bytes instead of a call to the float compare (the bound
-// then costs the survey a few cycles per particle more than |vx| + |vy|
-// did).
-template <>
-struct MagnitudeOrder<Float> {
-  static bool greater(Float a, Float b) { return floatBits(a) > floatBits(b); }
-};
+// (Magnitudes compare by isAboveNonNegative(), Math/Zero.hpp: for floats
+// their bit patterns as unsigned integers, a compare of four bytes instead
+// of a call to the float compare; the bound then costs the survey a few
+// cycles per particle more than |vx| + |vy| did.)
 
 // A bound on the speed |v| for the speed limit, without a square root: the
 // largest axis's |v_k| plus half of the others' (a >= b >= c >= 0:
@@ -96,14 +86,14 @@ struct AxisSpeed {
   typedef S Sum;
   static S of(const Vec<S, 2>& v) {
     const S a = fabs(v.x), b = fabs(v.y);
-    return MagnitudeOrder<S>::greater(a, b) ? a + half(b) : b + half(a);
+    return isAboveNonNegative(a, b) ? a + half(b) : b + half(a);
   }
   static S of(const Vec<S, 3>& v) {
     S a = fabs(v.x), b = fabs(v.y), c = fabs(v.z);
-    if (MagnitudeOrder<S>::greater(b, a)) {
+    if (isAboveNonNegative(b, a)) {
       const S t = a; a = b; b = t;
     }
-    if (MagnitudeOrder<S>::greater(c, a)) {
+    if (isAboveNonNegative(c, a)) {
       const S t = a; a = c; c = t;
     }
     return a + half(b + c);
@@ -230,7 +220,6 @@ struct CollisionConstraint {
     } list;
     Entry* const entries = list.at;
     Entry* end = entries;
-    bool moved = false;
     for (uint8_t k = 0; k < W::kParticleCapacity; ++k) {
       const uint8_t i = uint8_t(order[k] ^ k);  // (see sortOrder())
       const P& p = world.particleAt(i);
@@ -240,26 +229,24 @@ struct CollisionConstraint {
       while (e != entries && x < e[-1].x) {
         *e = e[-1];
         --e;
-        moved = true;
       }
       e->x = x;
       e->index = i;
     }
     const uint8_t count = uint8_t(end - entries);
     // Keep the new order for the next step: the colliding particles
-    // sorted, then the others (any order will do for them). When all
-    // collide and none moved, it is the order already kept.
-    if (count > 0 && (moved || count < W::kParticleCapacity)) {
+    // sorted, then the others (any order will do for them). (Written every
+    // step, all of it: a test for "nothing moved" cost more flash than the
+    // stores' cycles are worth.)
+    {
       uint8_t k = 0;
       for (const Entry* e = entries; e != end; ++e, ++k) {
         order[k] = uint8_t(e->index ^ k);
       }
-      if (count < W::kParticleCapacity) {
-        for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
-          if ((world.particleAt(i).flags & both) != both) {
-            order[k] = uint8_t(i ^ k);
-            ++k;
-          }
+      for (uint8_t i = 0; i < W::kParticleCapacity; ++i) {
+        if ((world.particleAt(i).flags & both) != both) {
+          order[k] = uint8_t(i ^ k);
+          ++k;
         }
       }
     }
@@ -285,12 +272,13 @@ struct CollisionConstraint {
   // in this step (by AxisSpeed's bound) than the smallest moving one's
   // radius. Past it, without swept contacts, the step raises
   // WorldError::kTunnelling; with them, it is `fast`, and the spread takes
-  // in the longest move along x too. Out of line, with a pointer walk: in
-  // the sort loop it cost three times as much (spilled registers). The
+  // in the longest move along x too. A loop of its own, with a pointer
+  // walk: in the sort loop it cost three times as much (spilled
+  // registers). (Left to the compiler: out of line it took 98 B more.) The
   // speeds are AxisSpeed's magnitudes: for fixed point the raw bits,
   // unsigned, with no saturating arithmetic in the loop.
   template <bool kSwept>
-  TINYPARTICLE_NOINLINE static S survey(W& world, bool& fast) {
+  static S survey(W& world, bool& fast) {
     typedef detail::AxisSpeed<S> Speed;
     typedef typename Speed::Sum Sum;
     const uint8_t both = P::kInUse | P::kCollides;
@@ -328,13 +316,15 @@ struct CollisionConstraint {
                                           uint8_t source) {
     const S margin = W::contactMargin();
     // The sums of a radius and the margin (reach) and of a radius and the
-    // spread (bound), worked out again only when the radius changes: in
-    // most scenes every particle has the same one.
+    // spread (bound). A float's are kept while the radius stays the same
+    // (in most scenes every particle has the same one): its adds cost about
+    // 100 cycles each. Fixed point adds them again for each particle: its
+    // adds are cheap, and the compare and copies of the cache took 110 B.
     S radius = S(), reach = margin, bound = spread;
-    for (uint8_t m = 0; m + 1 < count; ++m) {
+    for (uint8_t m = 0; uint8_t(m + 1) < count; ++m) {
       const uint8_t i = entries[m].index;
       const P& p = world.particleAt(i);
-      if (!(p.radius == radius)) {
+      if (ScalarTraits<S>::kCoarse || !(p.radius == radius)) {
         radius = p.radius;
         reach = radius + margin;
         bound = radius + spread;
@@ -353,9 +343,7 @@ struct CollisionConstraint {
         // most pairs that overlap along x end here.
         const S outer = reach + q.radius;
         if (!kSwept) {
-          // (|dy| > outer, without the call to fabs().)
-          const S dy = p.position.y - q.position.y;
-          if (dy > outer || -dy > outer) continue;
+          if (fabs(p.position.y - q.position.y) > outer) continue;
           if (W::kDimensions == 3 &&
               fabs(p.position[2] - q.position[2]) > outer) {
             continue;
@@ -364,7 +352,8 @@ struct CollisionConstraint {
           continue;
         }
         // The lower slot index is a, as a sweep in slot order would have it.
-        const uint8_t first = i < j ? i : j, second = i < j ? j : i;
+        const bool inOrder = i < j;
+        const uint8_t first = inOrder ? i : j, second = inOrder ? j : i;
         // In a fast step, a pair that was apart when it began and met in
         // it gets the contact of its first touch, also when it ends the
         // step overlapping: there the normal from the end positions would
@@ -372,7 +361,8 @@ struct CollisionConstraint {
         // here, not from pair(): this is the deepest point of the step's
         // stack.)
         if (!kSwept || !sweptPair(world, first, second, outer, source)) {
-          pair(world, first, second, outer, source);
+          pair(world, first, second, inOrder ? p : q, inOrder ? q : p, outer,
+               source);
         }
       }
     }
@@ -390,11 +380,12 @@ struct CollisionConstraint {
   }
 
   // Particles i < j whose boxes overlap: outer = r1 + r2 + margin.
-  static void pair(W& world, uint8_t i, uint8_t j, S outer, uint8_t source) {
-    const P& a = world.particleAt(i);
-    const P& b = world.particleAt(j);
+  // (a and b are those particles, which the sweep has at hand.)
+  static void pair(W& world, uint8_t i, uint8_t j, const P& a, const P& b,
+                   S outer, uint8_t source) {
     if (a.isResting() && b.isResting()) return;  // immovable or asleep
-    const S reach = a.radius + b.radius;
+    // r1 + r2, from outer (the radii are far from saturating).
+    const S reach = outer - W::contactMargin();
     const V delta = a.position - b.position;
     const S distanceSquared = delta.magnitudeSquared();
     if (distanceSquared > outer * outer) return;

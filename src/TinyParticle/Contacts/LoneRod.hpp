@@ -101,15 +101,19 @@ struct LoneRod {
     // (Taken once, before either solve: taken in each, it was linked twice.)
     V relative;
     const V& w = ends.relativeVelocity(relative);
+    // The velocity solve's new direction first: then both solves take the
+    // ends' relative speed along u, r, from one dot product.
+    if (!pass.positions) Eq::setDirection(d, link, pass.turned);
+    const S radial = detail::dotOutOfLine(w, u);
     S amount;
     S error = S();
     if (pass.positions) {
       bool turning;
-      amount = Eq::positionSpeed(d, w, u, link, pass, false, error, turning);
+      amount = Eq::positionSpeed(d, w, u, radial, link, pass, false, error,
+                                 turning);
       if (turning) pass.turned = true;
     } else {
-      Eq::setDirection(d, link, pass.turned);
-      amount = detail::negativeOutOfLine(detail::dotOutOfLine(w, u));
+      amount = detail::negativeOutOfLine(radial);
     }
     const S share = ends.shareOfA();
     ends.pushApart(&P::velocity, u, amount, share);

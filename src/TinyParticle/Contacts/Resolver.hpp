@@ -61,7 +61,7 @@ struct Resolver {
     const uint8_t count = world.contactCount();
     if (count == 0) return 0;
     C* const contacts = &WorldAccess::contact(world, 0);
-    // Below these a contact counts as resolved (see worstOf()).
+    // Below these a contact counts as resolved (see updateAndFindWorst()).
     const S closing = -W::speedMargin();
     const S deep = W::contactMargin();
     // A world of one contact slot: once resolved, its contact is done, and
@@ -75,15 +75,17 @@ struct Resolver {
     }
     // The particles in more than one contact: a resolution changes other
     // contacts only through them (a ball alone on the floor touches none).
-    // For each particle slot, in how many contacts it is: 0, 1, or 2 for
-    // more (a byte each: a bit per slot cost shifts and masks on every
-    // look, more than the bytes save); b = kNoIndex (scenery) counts none.
+    // For each particle slot, whether it is in no contact (0), one (1) or
+    // more (above 1) (a byte each: a bit per slot cost shifts and masks on
+    // every look, more than the bytes save); b = kNoIndex (scenery) counts
+    // none.
     uint8_t uses[kSlots];
     for (uint8_t i = 0; i < kSlots; ++i) uses[i] = 0;
     for (uint8_t j = 0; j < count; ++j) {
       const uint8_t a = contacts[j].a, b = contacts[j].b;
-      if (a < kSlots && uses[a] < 2) ++uses[a];
-      if (b < kSlots && uses[b] < 2) ++uses[b];
+      // (0, then 1, 3, 7...: shifted in, no compare.)
+      if (a < kSlots) uses[a] = uint8_t(uses[a] << 1 | 1);
+      if (b < kSlots) uses[b] = uint8_t(uses[b] << 1 | 1);
     }
     // A contact whose particles are in no other contact changes no other
     // one, and no other one changes it: it is resolved once, in one pass,
@@ -108,18 +110,18 @@ struct Resolver {
       ++iterations;
     }
     if (linkedCount == 0) return iterations;
-    uint8_t next = worstOf(contacts, linked, linkedCount, closing, deep);
-    while (next != kNoIndex && iterations < cap) {
-      C& contact = contacts[next];
-      resolveAny(world, contact, byDt, change);
-      ++iterations;
+    // (Nothing changed yet: the first pass only looks for the worst.)
+    change.touched[0] = change.touched[1] = kAllIndex;
+    uint8_t current = kNoIndex;
+    for (;;) {
+      const uint8_t next =
+          updateAndFindWorst(world, linked, linkedCount, current, change);
+      if (next == kNoIndex || iterations >= cap) break;
       // (The contact just resolved is neither closing nor penetrating now,
       // so it is not picked again.)
-      if ((change.touchedA && isShared(uses, contact.a)) ||
-          (change.touchedB && isShared(uses, contact.b))) {
-        update(world, contacts, linked, linkedCount, next, change);
-      }
-      next = worstOf(contacts, linked, linkedCount, closing, deep);
+      resolveAny(world, contacts[next], byDt, change);
+      ++iterations;
+      current = next;
     }
     return iterations;
   }
@@ -181,33 +183,6 @@ struct Resolver {
   }
 
  private:
-  // The index of the contact with the most negative separating velocity
-  // (ties: the lowest index) among those closing (below `closing`,
-  // -World::speedMargin()) or penetrating (deeper than `deep`,
-  // World::contactMargin()); kNoIndex if none. Below the margins a contact
-  // counts as resolved: otherwise corrections that round to one unit of the
-  // scalar (or, in float, that halve forever between a ball and the floor
-  // under it) would be resolved again and again up to the cap. What they
-  // leave is picked up by the next step. It looks only at the contacts of
-  // the list `linked` (indices, ascending). (Out of line: called from two
-  // places.)
-  TINYPARTICLE_NOINLINE static uint8_t worstOf(const C* contacts,
-                                               const uint8_t* linked,
-                                               uint8_t count, S closing,
-                                               S deep) {
-    uint8_t worstIndex = kNoIndex;
-    S worst = S::largest();
-    for (uint8_t k = 0; k < count; ++k) {
-      const uint8_t j = linked[k];
-      const C& c = contacts[j];
-      const S separating = c.separatingVelocity;
-      if (separating < worst && isActive(c, closing, deep)) {
-        worst = separating;
-        worstIndex = j;
-      }
-    }
-    return worstIndex;
-  }
   // separatingVelocity() with the normal in its stored form. (Left to the
   // compiler: forced out of line, a scene with one caller paid for a call.)
   static S separatingVelocityAlong(W& world, uint8_t a, uint8_t b,
@@ -234,61 +209,80 @@ struct Resolver {
     return i < kSlots && uses[i] > 1;
   }
 
+  // What a resolution changed, for the contacts that share its particles:
+  // for side a (0) and b (1), the particle whose velocity or position it
+  // changed (touched) and the one it moved (moved), or kAllIndex (no
+  // contact's particle), and how far that one moved.
   struct Change {
-    // (Left unconstructed, the moves in unions: every resolution writes
+    // (Left unconstructed, the moves in a union: every resolution writes
     // each field that is read after it; zeroing them cost 32 B of stores.)
     Change() {}
     union {
-      V moveA;          // how far each particle moved (when moved*)
+      V move[2];
     };
-    union {
-      V moveB;
-    };
-    bool touchedA;      // a's velocity or position changed
-    bool touchedB;
-    bool movedA;        // a's position changed
-    bool movedB;
+    uint8_t touched[2];
+    uint8_t moved[2];
     bool velocity;      // velocities changed
   };
 
-  // velocity += normal * dv, move = normal * dx, position += move: one
-  // call per particle (dv or dx may be 0: nothing to multiply then).
-  TINYPARTICLE_NOINLINE static void push(P& p,
-                                         const typename C::Normal& normal,
-                                         S dv, S dx, V& move) {
+  // velocity += normal * dv, move = normal * dx, position += move (dv or
+  // dx may be 0: nothing to multiply then). (Left to the compiler: called
+  // from resolveAny()'s loop over the two sides only, out of line it took
+  // 54 B more.)
+  static void push(P& p, const typename C::Normal& normal, S dv, S dx,
+                   V& move) {
     detail::pushAlongNormal(p.velocity, p.position, move, normal, dv, dx);
   }
 
-  // After a resolution: the penetration and separating velocity of every
-  // other contact of the list `linked` that shares a particle it changed
-  // (kAllIndex matches no contact; the contacts off the list share none).
-  // (Out of line: it keeps the resolve loop's frame small.)
-  TINYPARTICLE_NOINLINE static void update(W& world, C* contacts,
-                                           const uint8_t* linked,
-                                           uint8_t count, uint8_t current,
-                                           const Change& change) {
-    const uint8_t ta = change.touchedA ? contacts[current].a : kAllIndex;
-    const uint8_t tb = change.touchedB ? contacts[current].b : kAllIndex;
+  // One pass over the list `linked` (contact indices, ascending). First,
+  // after a resolution of contact `current`: the penetration and separating
+  // velocity of every other contact on it that shares a particle the
+  // resolution changed (kAllIndex matches no contact; the contacts off the
+  // list share none). Then, of each, whether it is the worst so far: the
+  // index of the contact with the most negative separating velocity (ties:
+  // the lowest index) among those closing (below -World::speedMargin()) or
+  // penetrating (deeper than World::contactMargin()); kNoIndex if none.
+  // Below the margins a contact counts as resolved: otherwise corrections
+  // that round to one unit of the scalar (or, in float, that halve forever
+  // between a ball and the floor under it) would be resolved again and
+  // again up to the cap. What they leave is picked up by the next step.
+  // (One pass for both: the two passes apart, each out of line, took 26 B
+  // more. Left to the compiler: from its one caller, out of line it took
+  // 58 B more.)
+  static uint8_t updateAndFindWorst(
+      W& world, const uint8_t* linked, uint8_t count, uint8_t current,
+      const Change& change) {
+    C* const contacts = &WorldAccess::contact(world, 0);
+    const S closing = -W::speedMargin();
+    const S deep = W::contactMargin();
+    uint8_t worstIndex = kNoIndex;
+    S worst = S::largest();
     for (uint8_t k = 0; k < count; ++k) {
       const uint8_t j = linked[k];
       C* const c = &contacts[j];
       const uint8_t a = c->a, b = c->b;
-      if (a != ta && a != tb && b != ta && b != tb) continue;
-      if (j == current) continue;
-      if (a == ta) {
-        if (change.movedA) c->penetration -= along(change.moveA, c->normal);
-      } else if (a == tb) {
-        if (change.movedB) c->penetration -= along(change.moveB, c->normal);
+      if (j != current &&
+          (a == change.touched[0] || a == change.touched[1] ||
+           b == change.touched[0] || b == change.touched[1])) {
+        for (uint8_t side = 0; side < 2; ++side) {
+          const uint8_t moved = change.moved[side];
+          if (moved != a && moved != b) continue;
+          // (a moved along the normal: shallower; b: deeper.)
+          const S shift = along(change.move[side], c->normal);
+          c->penetration = moved == a ? c->penetration - shift
+                                      : c->penetration + shift;
+        }
+        if (change.velocity) {
+          c->separatingVelocity = separatingVelocity(world, *c);
+        }
       }
-      if (b == ta) {
-        if (change.movedA) c->penetration += along(change.moveA, c->normal);
-      } else if (b == tb) {
-        if (change.movedB) c->penetration += along(change.moveB, c->normal);
-      }
-      if (change.velocity) {
-        c->separatingVelocity = separatingVelocity(world, *c);
+      const S separating = c->separatingVelocity;
+      if (separating < worst && isActive(*c, closing, deep)) {
+        worst = separating;
+        worstIndex = j;
       }
     }
+    return worstIndex;
   }
 
   // Resolves one contact: velocity, then penetration. (Out of line: called
@@ -300,17 +294,13 @@ struct Resolver {
     P* b = contact.b != kNoIndex ? &world.particleAt(contact.b) : nullptr;
     bool movesA = !a.isStatic();
     bool movesB = b != nullptr && !b->isStatic();
-    change.movedA = change.movedB = change.velocity = false;
+    change.velocity = false;
     // A sleeper pushed by a contact that became active here: all wake.
     if (a.isAsleep() || (b != nullptr && b->isAsleep())) {
       WorldAccess::wakeInContacts(world);
     }
-    if (!movesA && !movesB) {
-      change.touchedA = change.touchedB = false;
-      contact.penetration = S();
-      contact.separatingVelocity = S();
-      return;
-    }
+    // (Neither moving, as between two immovable particles, takes the same
+    // path: nothing is pushed, and the contact ends resolved.)
     // 1. Velocity.
     const S separating = contact.separatingVelocity;
     S deltaV = S();
@@ -331,14 +321,16 @@ struct Resolver {
         if (deltaV > byDt(fabs(alongA) + fabs(alongB))) {
           if (!detail::isZero(restitution)) {
             // A real impact: bounce, but not the part of the closing
-            // velocity that the relative acceleration built in this step.
-            target = -(separating * restitution);
-            S built = byDt(alongA - alongB);
+            // velocity that the relative acceleration built in this step
+            // (restitution times the rest; one multiply).
+            S bounced = deltaV;
+            const S built = byDt(alongA - alongB);
             if (built < S()) {
-              target += restitution * built;
-              if (target < S()) target = S();
+              bounced += built;
+              if (bounced < S()) bounced = S();
             }
-            deltaV = target - separating;
+            target = restitution * bounced;
+            deltaV += target;
           }
         } else if (stacked) {
           // Resting, one ball on another: the one that the acceleration
@@ -394,16 +386,26 @@ struct Resolver {
     if (movesB) {
       velocityA = deltaV * shareA;
       penetrationA = penetration * shareA;
-      push(*b, contact.normal, velocityA - deltaV, penetrationA - penetration,
-           change.moveB);
-      change.movedB = penetrating;
     }
-    if (movesA) {
-      push(a, contact.normal, velocityA, penetrationA, change.moveA);
-      change.movedA = penetrating;
+    // Side a (0), then b (1), in one copy of the code.
+    for (uint8_t side = 0; side < 2; ++side) {
+      P* const p = side == 0 ? &a : b;
+      const uint8_t index = side == 0 ? contact.a : contact.b;
+      const bool moves = side == 0 ? movesA : movesB;
+      S dv = velocityA, dx = penetrationA;
+      if (side != 0) {
+        dv -= deltaV;
+        dx -= penetration;
+      }
+      uint8_t touched = kAllIndex, moved = kAllIndex;
+      if (moves) {
+        push(*p, contact.normal, dv, dx, change.move[side]);
+        touched = index;
+        if (penetrating) moved = index;
+      }
+      change.touched[side] = touched;
+      change.moved[side] = moved;
     }
-    change.touchedA = movesA;
-    change.touchedB = movesB;
   }
 };
 

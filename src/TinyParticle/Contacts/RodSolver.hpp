@@ -110,7 +110,8 @@ struct RodEquations {
   TINYPARTICLE_NOINLINE static void span(const P* particles, uint8_t a,
                                          uint8_t b, const Link& link, V& d) {
     d = particles[a].position;
-    // (A pivot is often at the origin: zeros are skipped.)
+    // (A pivot is often at the origin: zeros are skipped. A Float lever
+    // saves 30 B without the test, at 390 cycles a step.)
     detail::subtractNonZero(
         d, b == kAnchorIndex ? link.anchor : particles[b].position);
   }
@@ -138,20 +139,22 @@ struct RodEquations {
   // sketch) d is normalised in full.
   static void setDirection(const Vec<S, 2>& d,
                            Link& link, bool unit) {
-    const S invL = link.inverseLength;
-    V scaled(d.x * invL, d.y * invL);
+    V scaled;
+    detail::scaledInto(d, link.inverseLength, scaled);
     bool near;
-    if (unit) {
+    if (unit || !detail::nearUnitByMagnitudes(S())) {
+      // |d / L|^2 within 1/256 of 1 (unit), or between 1/2 and 5/4
+      // (lengths 0.71 to 1.12, from which the lone rods' half-error moves
+      // converge: Contacts/LoneRod.hpp).
       const S q = detail::dotOutOfLine(scaled, scaled);
-      near = detail::isAboveNonNegative(q, S(1 - 1.0 / 256)) &&
-             detail::isBelowNonNegative(q, S(1 + 1.0 / 256));
-      if (near) {
+      near = detail::isAboveNonNegative(q, unit ? S(1 - 1.0 / 256) : S(0.5)) &&
+             detail::isBelowNonNegative(q, unit ? S(1 + 1.0 / 256) : S(1.25));
+      if (near && unit) {
         scaled *= detail::differenceOutOfLine(S(1.5), detail::half(q));
       }
     } else {
       // A bound without multiplies: |x|, |y| <= 1 and 1 <= |x| + |y| <=
-      // 1.5 pass only lengths between 0.7 and 1.12, from which the lone
-      // rods' half-error moves converge (see Contacts/LoneRod.hpp).
+      // 1.5 pass only lengths between 0.7 and 1.12 (as above).
       const S ax = fabs(scaled.x), ay = fabs(scaled.y);
       const S sum = detail::sumOutOfLine(ax, ay);
       near = detail::isBelowNonNegative(ax, S(1 + 1.0 / 64)) &&
@@ -186,13 +189,13 @@ struct RodEquations {
     // else the ends coincide: keep the old direction
   }
 
-  // A rod seen along its direction u: the relative speed along u, the
-  // span along u, and the square of the speed across u, (d - a u) / dt +
+  // A rod seen along its direction u: the relative speed along u (given),
+  // the span along u, and the square of the speed across u, (d - a u) / dt +
   // (w - r u) (in 2D by the dot kernel, detail::dotOutOfLine(): through
   // Vec operations that return vectors the lever's step cost 800 cycles
   // more; the kernel costs none measurable and saves code).
   struct Frame {
-    S radial;   // w . u
+    S radial;   // w . u (the caller's: the lone rods' two solves share it)
     S along;    // d . u
     S across2;  // |(d - a u) / dt + (w - r u)|^2
   };
@@ -200,7 +203,6 @@ struct RodEquations {
                                                  const Vec<S, 2>& w,
                                                  const Vec<S, 2>& u, S invDt,
                                                  Frame& f) {
-    f.radial = detail::dotOutOfLine(w, u);
     f.along = detail::dotOutOfLine(d, u);
     // Across u: along its normal n = (-u.y, u.x), one kernel for all four
     // (n . d is u x d to the bit: a product rounds symmetrically). The
@@ -219,7 +221,6 @@ struct RodEquations {
                                                  const Vec<S, 3>& w,
                                                  const Vec<S, 3>& u, S invDt,
                                                  Frame& f) {
-    f.radial = dot(w, u);
     f.along = dot(d, u);
     V q = d;
     q.addScaled(u, -f.along);
@@ -259,12 +260,13 @@ struct RodEquations {
   // square of the turn that decides `turning`: no division, no square root.
   // `unit`: the directions are unit vectors (the chains'), else d / L
   // (lone rods: Contacts/LoneRod.hpp), whose error is half of L - a.
-  static S positionSpeed(const V& d, const V& w, const V& u,
+  static S positionSpeed(const V& d, const V& w, const V& u, S radial,
                          const Link& link, const Pass& pass, bool unit,
                          S& error, bool& turning) {
     const Scaler<S>& byDt = pass.byDt;
     const S invDt = pass.invDt;
     Frame f;
+    f.radial = radial;
     frameOf(d, w, u, invDt, f);
     const S length = link.length;
     const S invL = link.inverseLength;
@@ -659,10 +661,11 @@ struct RodSolver {
   static S rightSide(W& world, const Slot& s, Pass& pass, S& error) {
     const V& u = linkOf(s).direction;
     const V w = relativeVelocity(world, s);
-    if (!pass.positions) return -dot(w, u);
+    const S radial = dot(w, u);
+    if (!pass.positions) return -radial;
     bool turning;
-    S right = Eq::positionSpeed(span(world, s), w, u, linkOf(s), pass, true,
-                                error, turning);
+    S right = Eq::positionSpeed(span(world, s), w, u, radial, linkOf(s), pass,
+                                true, error, turning);
     if (turning && detail::isZero(error)) pass.turned = true;
     if (!pass.first && !turning && !pass.coupled) {
       // Along a chain, what a further pass finds is the motion that a

@@ -17,6 +17,15 @@
 #include "MathErrors.hpp"
 #include "Turns.hpp"
 
+// (As Fixed.hpp defines it; the same definition, whichever comes first.)
+#ifndef TINYPARTICLE_ALWAYS_INLINE
+#if defined(__GNUC__)
+#define TINYPARTICLE_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define TINYPARTICLE_ALWAYS_INLINE inline
+#endif
+#endif
+
 namespace tinyparticle {
 
 class Float {
@@ -53,7 +62,7 @@ class Float {
   Float operator/(Float b) const {
     if (b.isZeroBits()) {
       detail::raiseMathError(MathError::kDivideByZero);
-      return mValue > 0.0f ? largest() : (mValue < 0.0f ? lowest() : Float());
+      return signedLargest();
     }
     return Float(mValue / b.mValue);
   }
@@ -77,6 +86,18 @@ class Float {
     uint32_t bits;
     memcpy(&bits, &mValue, sizeof(bits));
     return (bits & 0x7FFFFFFFul) == 0;
+  }
+  // x / 0: largest() with x's sign, 0 for 0 and NaN. From the bits, as
+  // isZeroBits(): float compares here linked the library's compare
+  // routines (about 90 bytes) into sketches that compare no float.
+  // (Always inlined: else the link kept an unused copy, 62 bytes, where a
+  // divide had been folded away.)
+  TINYPARTICLE_ALWAYS_INLINE Float signedLargest() const {
+    uint32_t bits;
+    memcpy(&bits, &mValue, sizeof(bits));
+    const uint32_t magnitude = bits & 0x7FFFFFFFul;
+    if (magnitude == 0 || magnitude > 0x7F800000ul) return Float();
+    return (bits & 0x80000000ul) != 0 ? lowest() : largest();
   }
   friend Float sqrt(Float x);
 

@@ -47,11 +47,24 @@ template <typename S>
 inline S inverseSqrt(S q) {
   return isPositive(q) ? S(1) / sqrt(q) : S();
 }
-// Float: a first guess from the bits (halving the exponent by a shift of
-// the whole word, within 3.5 %), then three Newton steps (1.7e-3, 4.5e-6,
-// then the rounding of the last step: a few units of 2^-24). A subnormal q
-// is scaled by 2^24 first (exact), its root by 2^12 after. Infinity gives
-// 0; q <= 0 and NaN give 0, as for the other scalars.
+// Float, for a normal q > 0 (what the rods and the balls pass: their
+// callers reject or scale the rest, so that they link none of the
+// subnormal's scaling below): a first guess from the bits (halving the
+// exponent by a shift of the whole word, within 3.5 %), then three Newton
+// steps (1.7e-3, 4.5e-6, then the rounding of the last step: a few units
+// of 2^-24).
+TINYPARTICLE_NOINLINE inline Float inverseSqrtOfNormal(Float q) {
+  uint32_t bits = 0x5F3759DFul - (floatBits(q) >> 1);
+  float guess;
+  memcpy(&guess, &bits, sizeof(guess));
+  Float y(guess);
+  const Float halfQ = half(q);
+  for (uint8_t i = 0; i < 3; ++i) y *= Float(1.5) - halfQ * y * y;
+  return y;
+}
+// Float, any q: a subnormal q is scaled by 2^24 first (exact), its root by
+// 2^12 after. Infinity gives 0; q <= 0 and NaN give 0, as for the other
+// scalars.
 TINYPARTICLE_NOINLINE inline Float inverseSqrt(Float q) {
   if (!isPositive(q)) return Float();
   Float scale(1);
@@ -59,13 +72,7 @@ TINYPARTICLE_NOINLINE inline Float inverseSqrt(Float q) {
     q *= Float(16777216.0);
     scale = Float(4096.0);
   }
-  uint32_t bits = 0x5F3759DFul - (floatBits(q) >> 1);
-  float guess;
-  memcpy(&guess, &bits, sizeof(guess));
-  Float y(guess);
-  const Float halfQ = half(q);
-  for (uint8_t i = 0; i < 3; ++i) y *= Float(1.5) - halfQ * y * y;
-  return y * scale;
+  return inverseSqrtOfNormal(q) * scale;
 }
 // Fixed: q is brought into [1/2, 2) by factors of 4 (exact upwards;
 // downwards the halvings round), then a parabola in steps of 2^-8, within
@@ -103,24 +110,22 @@ TINYPARTICLE_ALWAYS_INLINE S reciprocalByMultiplies(S x) {
   return compactReciprocalOfPositive(x);
 }
 // Float: without the float divide (which a sketch whose step never
-// divides then does not link), by Newton's steps r += r (1 - x r)
-// from a first guess from the bits (the exponent negated by subtracting
-// the word from a constant: within 5.1 %); each step squares the relative
-// error: 2.6e-3, 6.5e-6, 4e-11, then the last step's rounding: within 2
+// divides then does not link), as the square of 1 / sqrt(x) by
+// inverseSqrtOfNormal() (linked anyway for the rods' unit vectors: a guess
+// and Newton's steps of its own cost 40 B more), within about 2e-6, then
+// one Newton step r += r
+// (1 - x r), which squares that and leaves the step's rounding: within 2
 // units of 2^-24, for x from 2^-126 (the smallest normal) to below 2^126.
 // Any other x (from 2^126 on, where 1 / x is below the smallest normal;
 // infinity, NaN, subnormals, 0 and negatives, which break the promise of a
 // positive x) gives 0.
 TINYPARTICLE_NOINLINE inline Float reciprocalByMultiplies(Float x) {
-  const uint32_t bits = floatBits(x);
   // One compare: x <= 0 (the sign bit, or +0), subnormals, and from 2^126
   // on (infinity and NaN too) wrap above the range.
-  if (bits - 0x00800000ul >= 0x7E000000ul) return Float();
-  const uint32_t guessBits = 0x7EF311C3ul - bits;
-  float guess;
-  memcpy(&guess, &guessBits, sizeof(guess));
-  Float r(guess);
-  for (uint8_t i = 0; i < 3; ++i) r += r * (Float(1) - x * r);
+  if (floatBits(x) - 0x00800000ul >= 0x7E000000ul) return Float();
+  const Float y = inverseSqrtOfNormal(x);
+  Float r = y * y;
+  r += r * (Float(1) - x * r);
   return r;
 }
 
@@ -149,7 +154,7 @@ TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Float, N>& v) {
   memcpy(&scale, &scaleBits, sizeof(scale));
   v *= Float(scale);
   v *= Float(scale);
-  v *= inverseSqrt(dotOutOfLine(v, v));
+  v *= inverseSqrtOfNormal(dotOutOfLine(v, v));  // |v|^2 is about 1 now
   return true;
 }
 
@@ -235,20 +240,51 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Fixed<I, F>, N>& v) {
   return true;
 }
 
-// Float: v (1 / sqrt(|v|^2)) by inverseSqrt() (a guess from the bits and
-// Newton's steps: linked anyway, for a fast turn's factor), without the
-// balls' scaling by powers of two: a rod's span is metres, far from the
-// ends of the float range. Where |v|^2 is not a normal float (|v| below
-// about 1e-19 or above 1.8e19, or a component infinite or NaN) v has no
-// direction here: false, v unchanged, as for a zero vector (a rod's
-// direction is then kept, or taken as any at set-up).
+// Float: v (1 / sqrt(|v|^2)) by inverseSqrtOfNormal() (a guess from the
+// bits and Newton's steps: linked anyway, for a fast turn's factor and
+// the reciprocal), without the balls' scaling by powers of two: a rod's
+// span is metres, far from the ends of the float range. Where |v|^2 is
+// not a normal float (|v| below about 1e-19 or above 1.8e19, or a
+// component infinite or NaN) v has no direction here: false, v unchanged,
+// as for a zero vector (a rod's direction is then kept, or taken as any at
+// set-up).
 template <uint8_t N>
 TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   const Float q = dotOutOfLine(v, v);
   // One compare: 0, subnormals, infinity and NaN wrap above the range.
   if (floatBits(q) - 0x00800000ul >= 0x7F000000ul) return false;
-  v *= inverseSqrt(q);
+  v *= inverseSqrtOfNormal(q);
   return true;
+}
+
+// out = v k in 2D: for Fixed through Vec's out-of-line *= (one call in
+// place of two multiplies' calls: a rod's direction, 26 B of the Q16.16
+// lever); for other scalars written out (for Float the copy cost 14 B
+// more).
+template <typename S>
+inline void scaledInto(const Vec<S, 2>& v, S k, Vec<S, 2>& out) {
+  out.x = v.x * k;
+  out.y = v.y * k;
+}
+template <uint8_t I, uint8_t F>
+inline void scaledInto(const Vec<Fixed<I, F>, 2>& v, Fixed<I, F> k,
+                       Vec<Fixed<I, F>, 2>& out) {
+  out = v;
+  out *= k;
+}
+
+// Whether the lone rods test a direction's length by its components'
+// magnitudes (Contacts/RodSolver.hpp, setDirection()): for Float, where
+// |x| is a bit and the square two float multiplies (360 cycles of the
+// lever's step for 2 B); not for Fixed, where the square's test is 64 B
+// smaller for about 170 cycles.
+template <typename S>
+constexpr bool nearUnitByMagnitudes(S) {
+  return true;
+}
+template <uint8_t I, uint8_t F>
+constexpr bool nearUnitByMagnitudes(Fixed<I, F>) {
+  return false;
 }
 
 // a + b, a - b and -a out of line: a Fixed sum saturates in about 14 B of
@@ -294,9 +330,10 @@ inline S turnDropFactor(S h) {
 }
 // Float: as Fixed below, the series up to h = 1/32 with the terms up to
 // h^4 (the rest is below 4.2e-8, 0.7 units of 2^-24), then the formula,
-// through inverseSqrt() (which a Float world's rods link anyway for their
-// unit vectors: unitBySteps(), above). h >= 0 is compared by its bits
-// (isAboveNonNegative(), Math/Zero.hpp): no float compare linked.
+// through inverseSqrtOfNormal() (which a Float world's rods link anyway
+// for their unit vectors: unitBySteps(), above). h >= 0 is compared by
+// its bits (isAboveNonNegative(), Math/Zero.hpp): no float compare
+// linked.
 inline Float turnDropFactor(Float h) {
   typedef Float S;
   if (!isAboveNonNegative(h, S(1.0 / 32))) {
@@ -304,7 +341,8 @@ inline Float turnDropFactor(Float h) {
   }
   if (!isBelowNonNegative(h, Float(0.5))) return Float(2);
   const Float m = Float(1) - (h + h);
-  const Float r = reciprocalByMultiplies(Float(1) + m * inverseSqrt(m));
+  const Float r =
+      reciprocalByMultiplies(Float(1) + m * inverseSqrtOfNormal(m));
   return r + r;
 }
 // Fixed: up to h = 1/32 (a turn of 1/4 rad) the series 1 + h/2 + h^2/2 +
@@ -322,11 +360,15 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
   typedef Fixed<I, F> S;
   const uint8_t kTerms = F < 10 ? 1 : (F < 15 ? 2 : (F < 20 ? 3 : 4));
   if (!(h > S(1.0 / 32))) {
+    // (Horner's rule from the last term kept: no sum with a zero.)
     S p = S();
     if (kTerms >= 4) p = h * S(0.875);
-    if (kTerms >= 3) p = h * sumOutOfLine(S(0.625), p);
-    if (kTerms >= 2) p = h * sumOutOfLine(S(0.5), p);
-    return sumOutOfLine(S(1), h * sumOutOfLine(S(0.5), p));
+    if (kTerms >= 3) {
+      p = h * (kTerms > 3 ? sumOutOfLine(S(0.625), p) : S(0.625));
+    }
+    if (kTerms >= 2) p = h * (kTerms > 2 ? sumOutOfLine(S(0.5), p) : S(0.5));
+    return sumOutOfLine(S(1),
+                        h * (kTerms > 1 ? sumOutOfLine(S(0.5), p) : S(0.5)));
   }
   if (!(h < S(0.5))) return S(2);
   S m = S(1) - sumOutOfLine(h, h);

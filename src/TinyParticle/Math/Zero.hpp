@@ -107,7 +107,10 @@ constexpr bool isNonFinite(Fixed<I, F>) {
   return false;
 }
 inline bool isNonFinite(Float x) {
-  return (floatBits(x) & 0x7F800000ul) == 0x7F800000ul;
+  // The exponent, all ones, from the high half alone: shifted left past
+  // the sign, it fills the top byte (half the bytes of a 32-bit test).
+  const uint16_t high = uint16_t(floatBits(x) >> 16);
+  return uint16_t(high << 1) >= 0xFF00u;
 }
 template <typename S>
 inline bool isNonFinite(const Vec<S, 2>& v) {

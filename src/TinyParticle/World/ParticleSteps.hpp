@@ -19,6 +19,16 @@
 namespace tinyparticle {
 namespace detail {
 
+// n, hidden from the optimizer like throughPointer() hides an address: a
+// loop over a pool of a few slots then stays a loop, where the compiler
+// would write it out once per slot (a step's short passes over the
+// particles: about 30 bytes a slot).
+inline uint8_t throughRegister(uint8_t n) {
+#if defined(__GNUC__)
+  asm("" : "+r"(n));
+#endif
+  return n;
+}
 // What a non-finite component x saturates to: +-largest() for an
 // infinity, 0 for a NaN.
 template <typename S>
@@ -55,6 +65,15 @@ struct AddTo<Fixed<I, F> > {
   }
 };
 
+template <typename A, typename B>
+struct IsSameScalar {
+  static const bool value = false;
+};
+template <typename A>
+struct IsSameScalar<A, A> {
+  static const bool value = true;
+};
+
 // kAccumulates: the pool's particles keep a force accumulator (a world
 // with force slots); without one, the accumulator's terms fold away.
 template <typename S, uint8_t Dim, bool kAccumulates = true>
@@ -84,10 +103,13 @@ struct ParticleSteps {
       if (!isMoving(p)) continue;
       // One axis at a time, written out: a loop over the axes would select
       // the component at every access.
-      accelerate(p.velocity.x, p.accumulated().x, uniformStep.x, byDt);
-      accelerate(p.velocity.y, p.accumulated().y, uniformStep.y, byDt);
+      accelerateIn<kMoveHere>(p.velocity.x, p.accumulated().x, uniformStep.x,
+                              byDt);
+      accelerateIn<kMoveHere>(p.velocity.y, p.accumulated().y, uniformStep.y,
+                              byDt);
       if (Dim == 3) {
-        accelerate(p.velocity[2], p.accumulated()[2], uniformStep[2], byDt);
+        accelerateIn<kMoveHere>(p.velocity[2], p.accumulated()[2],
+                                uniformStep[2], byDt);
       }
       // (Linked only by a sketch that damps: Core/Particle.hpp.)
       const typename Damping<S, Dim>::Apply damp = Damping<S, Dim>::sApply;
@@ -124,9 +146,9 @@ struct ParticleSteps {
       P& p = particles[i];
       if (!isMoving(p)) continue;
       if (!move(p, byDt, error)) continue;
-      accelerate(p.velocity.x, S(), rest.x, byDt);
-      accelerate(p.velocity.y, S(), rest.y, byDt);
-      if (Dim == 3) accelerate(p.velocity[2], S(), rest[2], byDt);
+      accelerateIn<false>(p.velocity.x, S(), rest.x, byDt);
+      accelerateIn<false>(p.velocity.y, S(), rest.y, byDt);
+      if (Dim == 3) accelerateIn<false>(p.velocity[2], S(), rest[2], byDt);
     }
   }
 
@@ -189,6 +211,7 @@ struct ParticleSteps {
     nonFinite(p, error);
   }
   // One component, out of line: a call is smaller than a copy per axis.
+  // (A loop over the axes through Vec's operator[] was 12 bytes more.)
   TINYPARTICLE_NOINLINE static void saturateNonFinite(S& x) {
     if (isNonFinite(x)) x = finiteLimit(x);
   }
@@ -204,6 +227,26 @@ struct ParticleSteps {
                                                     const Scaler<S>& byDt) {
     if (!isZero(acceleration)) AddTo<S>::add(byDt(acceleration), velocity);
     if (!isZero(uniformStep)) AddTo<S>::add(uniformStep, velocity);
+  }
+  // accelerate() for integrate<kMoveHere>(): written out in a world
+  // without constraints (the float spring has no cycles to spare); else,
+  // for Float, out of line: its two adds written out were about 90 bytes
+  // an axis, and a world with rods spends its cycles on them.
+  template <bool kWrittenOut>
+  TINYPARTICLE_ALWAYS_INLINE static void accelerateIn(S& velocity,
+                                                      S acceleration,
+                                                      S uniformStep,
+                                                      const Scaler<S>& byDt) {
+    if (kWrittenOut || !kFloatScalar) {
+      accelerate(velocity, acceleration, uniformStep, byDt);
+    } else {
+      accelerateOutOfLine(velocity, acceleration, uniformStep, byDt);
+    }
+  }
+  static const bool kFloatScalar = IsSameScalar<S, Float>::value;
+  TINYPARTICLE_NOINLINE static void accelerateOutOfLine(
+      S& velocity, S acceleration, S uniformStep, const Scaler<S>& byDt) {
+    accelerate(velocity, acceleration, uniformStep, byDt);
   }
   TINYPARTICLE_ALWAYS_INLINE static void moveAxis(S& position, S velocity,
                                                   const Scaler<S>& byDt) {

@@ -10,8 +10,29 @@
 
 #include <stdint.h>
 
+#include "../Math/Float.hpp"
+#include "../Math/Vec.hpp"
+#include "../Math/Zero.hpp"
+
 namespace tinyparticle {
 namespace detail {
+
+// sum += a. Float: component by component, zeros skipped, so that a
+// constant zero (standard gravity's x) folds away: x + 0 is a library
+// call the compiler must keep (-0 + 0 is +0). Fixed point folds it as is.
+template <class V>
+inline void addUniformTo(V& sum, const V& a) {
+  sum += a;
+}
+inline void addUniformTo(Vec<Float, 2>& sum, const Vec<Float, 2>& a) {
+  if (!isZero(a.x)) sum.x += a.x;
+  if (!isZero(a.y)) sum.y += a.y;
+}
+inline void addUniformTo(Vec<Float, 3>& sum, const Vec<Float, 3>& a) {
+  if (!isZero(a.x)) sum.x += a.x;
+  if (!isZero(a.y)) sum.y += a.y;
+  if (!isZero(a.z)) sum.z += a.z;
+}
 
 template <class V>
 struct UniformAcceleration {
@@ -22,7 +43,7 @@ struct UniformAcceleration {
   template <typename S>
   S uniformComponent(S V::*component) const { return mUniform.*component; }
   void clearUniform() { mUniform = V(); }
-  void addUniform(const V& a) { mUniform += a; }
+  void addUniform(const V& a) { addUniformTo(mUniform, a); }
 };
 
 // During a step, the step's Scaler (the multiply by dt) for the contact

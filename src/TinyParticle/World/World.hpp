@@ -178,10 +178,11 @@ class World
 
   // The particle, or null if the id is invalid or stale.
   ParticleType* particle(ParticleId id) {
-    return isLive(id) ? &particleAt(id.index) : nullptr;
+    if (kParticles == 0) return nullptr;
+    return Core::liveParticle(&particleAt(0), kParticles, id);
   }
   const ParticleType* particle(ParticleId id) const {
-    return isLive(id) ? &particleAt(id.index) : nullptr;
+    return const_cast<World*>(this)->particle(id);
   }
 
   // Removes the particle and every force generator and constraint that
@@ -855,13 +856,9 @@ class World
                   "cables, planes and collisions (rods need none)");
   }
 
-  bool isLive(ParticleId id) const {
-    return id.index < kParticles &&
-           liveSlot(particleAt(id.index), id) != nullptr;
-  }
-
   // The slot if it is in use and of the handle's generation, else null: the
-  // one test behind every handle lookup (particles, forces, constraints).
+  // test behind the force and constraint handles (particles: WorldCore::
+  // liveParticle()).
   template <typename Slot, typename Id>
   static Slot* liveSlot(Slot& slot, Id id) {
     return slot.inUse() && slot.generation == id.generation ? &slot : nullptr;
@@ -879,7 +876,8 @@ class World
     return true;
   }
 
-  // isLive, and records a stale or invalid handle.
+  // Whether the handle names a live particle; else records a stale or
+  // invalid handle.
   // (A world without particle slots says so at compile time, so that what
   // follows a successful check is seen to be dead code there.)
   bool check(ParticleId id) {
@@ -919,8 +917,12 @@ class World
                   "this World has no constraint slot: World<S, Dim, "
                   "particles, forces, constraints, contacts> needs "
                   "constraints > 0 for rods, cables, planes and collisions");
+    // (Through a pointer the compiler cannot see through: the slot's
+    // fields, written here and by the caller, take a short store each
+    // where a constant address took four bytes.)
+    ConstraintSlot* const slots = detail::throughPointer(&constraintAt(0));
     for (uint8_t i = 0; i < kConstraints; ++i) {
-      ConstraintSlot& c = constraintAt(i);
+      ConstraintSlot& c = slots[i];
       if (c.inUse()) continue;
       c.a = a;
       c.b = b;
@@ -1056,9 +1058,12 @@ class World
     const RodSolve lone =
         &LoneRods<World>::template solve<LoneEnds::kAnchored>;
     const RodSolve current = RodStore::rodSolver();
+    // (In a world of one slot the rod is alone: known at compile time, so
+    // that no slot freeing is linked for a refusal that cannot happen.)
     if (current == nullptr) {
       RodStore::setRodSolver(lone);
-    } else if (current == lone && !LoneRods<World>::isAlone(*this, id.index)) {
+    } else if (kConstraints > 1 && current == lone &&
+               !LoneRods<World>::isAlone(*this, id.index)) {
       freeSlot(constraintAt(id.index));
       mError |= WorldError::kBadArgument;
       return ConstraintId();

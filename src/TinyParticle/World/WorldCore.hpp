@@ -34,16 +34,6 @@ namespace detail {
 template <bool kValue>
 struct Choice {};
 
-// n, hidden from the optimizer like throughPointer() hides an address: a
-// loop over a pool of a few slots then stays a loop, where the compiler
-// would write it out once per slot (a step's short passes over the
-// particles: about 30 bytes a slot).
-inline uint8_t throughRegister(uint8_t n) {
-#if defined(__GNUC__)
-  asm("" : "+r"(n));
-#endif
-  return n;
-}
 // A pool of one slot keeps its constant address (and its pass no loop):
 // hiding it cost the spring scene 1 % of a step.
 template <class Slot>
@@ -74,18 +64,25 @@ class WorldCore {
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
       if (p.inUse()) continue;
-      // Every field but the generation (the handles' count goes on),
-      // each written once: a whole new particle would be zeroed first.
+      // Every field but the generation (the handles' count goes on): its
+      // bytes zeroed (see freeSlot()) by a loop written out here, smaller
+      // than the stores of the zero fields (a call of clearBytesBut() took
+      // 28 bytes more: the arguments wait in saved registers across it),
+      // then the rest.
+      static_assert(sizeof(ParticleType) < 256,
+                    "a particle's bytes are counted in 8 bits");
+      uint8_t* const bytes = reinterpret_cast<uint8_t*>(&p);
+      const uint8_t kept = uint8_t(&p.generation - bytes);
+      for (uint8_t k = 0; k < sizeof(ParticleType); ++k) {
+        if (k != kept) bytes[k] = 0;
+      }
       p.position = position;
-      p.velocity = CoreVec();
       p.inverseMass = inverseMass;
       p.radius = radius;
-      p.damping = 0;
       p.flags = detail::isZero(inverseMass)
                     ? uint8_t(ParticleType::kInUse | ParticleType::kCollides |
                               ParticleType::kStatic)
                     : uint8_t(ParticleType::kInUse | ParticleType::kCollides);
-      p.clearAccumulated();
       return ParticleId(i, p.generation);
     }
     mError |= WorldError::kParticlesFull;
@@ -93,25 +90,52 @@ class WorldCore {
     return ParticleId();
   }
 
+  // The particle a handle names, if it is live; else null. Out of line:
+  // every add*() checks its handles, and a sketch looks its particles up
+  // in its loop (World::particle()); written out, each took about 40 bytes.
+  template <class ParticleType>
+  TINYPARTICLE_NOINLINE static ParticleType* liveParticle(
+      ParticleType* slots, uint8_t count, ParticleId id) {
+    if (id.index < count) {
+      ParticleType& p = slots[id.index];
+      if (p.inUse() && p.generation == id.generation) return &p;
+    }
+    return nullptr;
+  }
+
   // Whether a handle names a live particle of the pool; else kStaleHandle
   // is raised (World::check()).
   template <class ParticleType>
-  bool checkParticle(const ParticleType* slots, uint8_t count,
-                     ParticleId id) {
-    if (id.index < count) {
-      const ParticleType& p = slots[id.index];
-      if (p.inUse() && p.generation == id.generation) return true;
-    }
+  bool checkParticle(ParticleType* slots, uint8_t count, ParticleId id) {
+    if (liveParticle(slots, count, id) != nullptr) return true;
     return staleParticle();
   }
 
   // Empties a particle, force or constraint slot; its generation moves on,
   // so the handles to it become stale.
+  // (All bytes zero is every slot's empty state: null pointers, zero
+  // scalars, no flags; a scalar's zero is all zero bytes, as Fixed's,
+  // Float's and any IEEE float's. One routine for every slot type: a
+  // constraint slot's type names its World, and the copy per type cost 30
+  // bytes.)
   template <class Slot>
   static void freeSlot(Slot& slot) {
-    const uint8_t generation = uint8_t(slot.generation + 1);
-    slot = Slot();
-    slot.generation = generation;
+    clearBut(slot);
+    ++slot.generation;
+  }
+  // Every byte of the slot zero but its generation.
+  template <class Slot>
+  static void clearBut(Slot& slot) {
+    static_assert(sizeof(Slot) < 256, "a slot's bytes are counted in 8 bits");
+    uint8_t* const bytes = reinterpret_cast<uint8_t*>(&slot);
+    clearBytesBut(bytes, sizeof(Slot), uint8_t(&slot.generation - bytes));
+  }
+  TINYPARTICLE_NOINLINE static void clearBytesBut(uint8_t* bytes,
+                                                  uint8_t size,
+                                                  uint8_t kept) {
+    for (uint8_t i = 0; i < size; ++i) {
+      if (i != kept) bytes[i] = 0;
+    }
   }
 
   // A handle that names no live particle (World::check()): kStaleHandle,
@@ -130,6 +154,9 @@ class WorldCore {
   CoreForceSlot* newForce(CoreForceSlot* slots, uint8_t count, ForceId& id,
                           uint8_t a, uint8_t b, uint8_t kind,
                           typename CoreForceSlot::Apply apply) {
+    // (Through a hidden pointer: a short store per field, here and in the
+    // caller's copy of the parameters.)
+    slots = detail::throughPointer(slots);
     for (uint8_t i = 0; i < count; ++i) {
       CoreForceSlot& f = slots[i];
       if (f.inUse()) continue;
@@ -192,6 +219,7 @@ class WorldCore {
   template <class ParticleType>
   static void markStatic(ParticleType* slots, uint8_t count) {
     slots = detail::poolThroughPointer(slots, count);
+    if (count > 1) count = detail::throughRegister(count);
     for (uint8_t i = 0; i < count; ++i) {
       ParticleType& p = slots[i];
       p.flags = detail::isZero(p.inverseMass)
@@ -211,10 +239,16 @@ class WorldCore {
                           bool andMove) {
     slots = detail::throughPointer(slots);
     CoreVec uniformStep;
-    for (uint8_t k = 0; k < Dim; ++k) {
-      if (detail::isZero(uniform[k])) continue;
-      const S whole = byDt(uniform[k]);
-      uniformStep[k] = andMove ? whole : detail::half(whole);
+    if (kMoveHere) {
+      // No rods: always the whole kick, and no halves linked.
+      for (uint8_t k = 0; k < Dim; ++k) {
+        if (!detail::isZero(uniform[k])) uniformStep[k] = byDt(uniform[k]);
+      }
+    } else {
+      const uint8_t part = andMove ? kWholeKick : kFirstHalfKick;
+      uniformStep.x = kickPart(uniform.x, byDt, part);
+      uniformStep.y = kickPart(uniform.y, byDt, part);
+      if (Dim == 3) uniformStep[2] = kickPart(uniform[2], byDt, part);
     }
     StepsFor<ParticleType>::Type::template integrate<kMoveHere>(
         slots, count, uniformStep, byDt, andMove, mError);
@@ -227,21 +261,31 @@ class WorldCore {
   void moveParticles(ParticleType* slots, uint8_t count,
                      const CoreVec& uniform, const Scaler<S>& byDt) {
     CoreVec rest;
-    rest.x = restOfKick(uniform.x, byDt);
-    rest.y = restOfKick(uniform.y, byDt);
-    if (Dim == 3) rest[2] = restOfKick(uniform[2], byDt);
+    rest.x = kickPart(uniform.x, byDt, kRestOfKick);
+    rest.y = kickPart(uniform.y, byDt, kRestOfKick);
+    if (Dim == 3) rest[2] = kickPart(uniform[2], byDt, kRestOfKick);
     StepsFor<ParticleType>::Type::movePositions(slots, count, rest, byDt,
                                                 mError);
   }
 
-  // One axis of it: the kick a dt less its first half. Out of line, once
-  // per axis and step: a loop over the axes picks the component by its
-  // index at every access.
-  TINYPARTICLE_NOINLINE static S restOfKick(S acceleration,
-                                            const Scaler<S>& byDt) {
+  // One axis of the uniform acceleration's kick a dt: whole, its first
+  // half, or the rest (the whole less the first half). Out of line, once
+  // per axis and step, shared by both halves: a loop over the axes picks
+  // the component by its index at every access.
+  static const uint8_t kWholeKick = 0;
+  static const uint8_t kFirstHalfKick = 1;
+  static const uint8_t kRestOfKick = 2;
+  // (The component by reference: its address is two instructions where
+  // its value took four loads at every call.)
+  TINYPARTICLE_NOINLINE static S kickPart(const S& component,
+                                          const Scaler<S>& byDt,
+                                          uint8_t part) {
+    const S acceleration = component;
     if (detail::isZero(acceleration)) return S();
     const S whole = byDt(acceleration);
-    return whole - detail::half(whole);
+    if (part == kWholeKick) return whole;
+    const S first = detail::half(whole);
+    return part == kFirstHalfKick ? first : whole - first;
   }
 
   // The step's last pass: with constraints (`checkFinite`), what the rods
