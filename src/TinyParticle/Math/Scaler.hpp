@@ -144,12 +144,14 @@ inline S half(S x) {
 template <uint8_t I, uint8_t F>
 inline Fixed<I, F> half(Fixed<I, F> x) {
   typedef Fixed<I, F> T;
-  // round(|x| 2^(F-1) / 2^F) = (|x| + 1) >> 1, at most 2^(bits-2): the
-  // negation is safe.
-  const typename T::URaw m =
-      typename T::URaw((T::magnitude(x.raw()) + 1u) >> 1);
-  const typename T::Raw r = typename T::Raw(m);
-  return T::fromRaw(x.raw() < 0 ? typename T::Raw(-r) : r);
+  typedef typename T::Raw Raw;
+  // round(x / 2), ties away from zero: (x + 1) >> 1 for x >= 0 (in
+  // URaw, where it cannot overflow), floor(x / 2) for x < 0 (-2k - 1 gives
+  // -k - 1), an arithmetic shift written as ~(~x >> 1) so that no negative
+  // value is shifted. Half the code of negating to the magnitude and back.
+  const Raw r = x.raw();
+  if (r < 0) return T::fromRaw(Raw(~Raw(Raw(~r) >> 1)));
+  return T::fromRaw(Raw(typename T::URaw(typename T::URaw(r) + 1u) >> 1));
 }
 inline Float half(Float x) {
   float f = x.toFloat();
