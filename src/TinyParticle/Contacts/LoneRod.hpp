@@ -226,7 +226,8 @@ struct LoneRods {
       }
       if (!pass.positions) break;
       // After a fast turn (pass.turned), unit directions (see above).
-      WorldAccess::movePositions(world, byDt);
+      // (byDt is the step's: the world kept the rest of its kick.)
+      WorldAccess::movePositionsOfStep(world, byDt);
       pass.positions = false;
     }
   }

@@ -97,6 +97,12 @@ class WorldAccess {
                             const Scaler<typename W::Scalar>& byDt) {
     world.movePositions(byDt);
   }
+  // The same with the step's own Scaler (World::movePositionsOfStep()).
+  template <class W>
+  static void movePositionsOfStep(W& world,
+                                  const Scaler<typename W::Scalar>& byDt) {
+    world.movePositionsOfStep(byDt);
+  }
 
   // For sleeping (World/Sleep.hpp): the steps in a row at rest, and
   // whether some particles sleep.

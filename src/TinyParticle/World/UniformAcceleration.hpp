@@ -47,19 +47,23 @@ struct UniformAcceleration {
 };
 
 // During a step, the step's Scaler (the multiply by dt) for the contact
-// generators that need dt (rods and cables). Only worlds with constraints
-// keep the pointer.
-template <class Scaler, bool kUsed>
+// generators that need dt (rods and cables), and the rest of the uniform
+// kick that the rods' solver adds after it moves the particles (V: the
+// world's Vec; kept here, not on the step's stack: a frame for it cost the
+// step about 20 bytes). Only worlds with constraints keep them.
+template <class Scaler, class V, bool kUsed>
 struct StepScaler {
   const Scaler* mByDt;
+  V mRestKick;
 
-  constexpr StepScaler() : mByDt(nullptr) {}
+  constexpr StepScaler() : mByDt(nullptr), mRestKick() {}
   void setStepScaler(const Scaler* byDt) { mByDt = byDt; }
   const Scaler& stepScaler() const { return *mByDt; }
+  V& restKick() { return mRestKick; }
 };
 
-template <class Scaler>
-struct StepScaler<Scaler, false> {
+template <class Scaler, class V>
+struct StepScaler<Scaler, V, false> {
   constexpr StepScaler() {}
   void setStepScaler(const Scaler*) {}
   // Never called (without constraints no generator runs), but a world
@@ -67,6 +71,11 @@ struct StepScaler<Scaler, false> {
   const Scaler& stepScaler() const {
     static const Scaler kNone((typename Scaler::Scalar()));
     return kNone;
+  }
+  // Never written (without constraints the kick comes whole).
+  V& restKick() {
+    static V none;
+    return none;
   }
 };
 
