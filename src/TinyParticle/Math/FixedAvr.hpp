@@ -164,15 +164,20 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
   asm volatile(
       // T = sign of the result; a and b become magnitudes.
       TINYPARTICLE_AVR_SIGN_AND_MAGNITUDES
-      // Pick a path by the top bytes (r1 is still zero here).
+      // a3 != 0: swap or saturate at 4 (r1 is still zero here).
       "    cpse r25, r1\n"
       "    rjmp 4f\n"
-      "    cpse r21, r1\n"
-      "    rjmp 5f\n"
-      // ---- a3 == 0 and b3 == 0 (|a|, |b| < 256): nine MULs. The complemented
-      // sum: byte 1 in r30, bytes 2..5 in r26, r27, r30, r31 (r30 is reused
-      // once the carries of byte 1 are out).
+      "6:\n"
+      // a3 == 0 now. Columns 0 to 2 take no byte 3, so both paths share
+      // them (56 bytes once, not twice); b3 picks the path after them, with
+      // tst as MUL has overwritten r1: the same 2 cycles as the cpse it
+      // replaces when b3 == 0. Complemented sum: byte 1 in r30, bytes 2..5
+      // in r26, r27, r30, r31 (r30 is reused once the carries of byte 1 are
+      // out).
       TINYPARTICLE_AVR_MUL_COLUMNS_0_TO_2
+      "    tst  r21\n"
+      "    brne 5f\n"
+      // ---- b3 == 0 too (|a|, |b| < 256): nine MULs.
       "    ldi  r31, 0xff\n"          // column 3
       "    mul  r23, r20\n"
       "    sub  r27, r0\n"
@@ -224,10 +229,10 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
       "    movw r24, r20\n"
       "    movw r18, r26\n"
       "    movw r20, r30\n"
+      "    rjmp 6b\n"
       "5:\n"
       // ---- a3 == 0, b3 != 0: twelve MULs; byte 6 goes to r22 once a0 is
       // no longer needed.
-      TINYPARTICLE_AVR_MUL_COLUMNS_0_TO_2
       "    ldi  r31, 0xff\n"          // column 3
       "    mul  r22, r21\n"
       "    sub  r27, r0\n"
