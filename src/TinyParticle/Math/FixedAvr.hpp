@@ -48,6 +48,14 @@ TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
   asm volatile("" : "+m"(MathErrorStore<void>::flags));
 }
 
+// The same for the multiply and the divide, which saturate in
+// tinyparticle_saturate32 (TINYPARTICLE_AVR_SATURATE): the "i" operand also
+// makes the compiler emit that routine, named only in assembly text there.
+TINYPARTICLE_ALWAYS_INLINE void flagsTouchedSaturating() {
+  asm volatile("" : "+m"(MathErrorStore<void>::flags)
+               : "i"(tinyparticle_saturate32));
+}
+
 #define TINYPARTICLE_AVR_FLAGS \
   "_ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE"
 // TrigTables<>::kRecip, kSqrt, kAtan and kSin, likewise.
@@ -94,21 +102,17 @@ TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
   TINYPARTICLE_AVR_MAGNITUDE32("r25", "r24", "r23", "r22", "1") \
   TINYPARTICLE_AVR_MAGNITUDE32("r21", "r20", "r19", "r18", "2")
 
-// Too big: saturate with the sign of the result (T), raise kOverflow;
-// `tmp` is a free register, then on to `done` (a label further on).
-#define TINYPARTICLE_AVR_SATURATE(tmp, done)               \
-  "    lds  " tmp ", " TINYPARTICLE_AVR_FLAGS "\n"          \
-  "    ori  " tmp ", 4\n"                                   \
-  "    sts  " TINYPARTICLE_AVR_FLAGS ", " tmp "\n"          \
-  "    ldi  r22, 0xff\n"                                    \
-  "    ldi  r23, 0xff\n"                                    \
-  "    ldi  r24, 0xff\n"                                    \
-  "    ldi  r25, 0x7f\n"                                    \
-  "    brtc " done "f\n"               /* 0x7fffffff */     \
-  "    subi r22, 0xff\n"               /* + 1: 0x80000000 */ \
-  "    sbci r23, 0xff\n"                                    \
-  "    sbci r24, 0xff\n"                                    \
-  "    sbci r25, 0xff\n"
+// Too big: saturate with the sign of the result (T), raise kOverflow, in
+// the saturation routine of the adds (Fixed.hpp), which takes the sign
+// from bit 7 of r25, set for max(): 4 words where the inline copy was 13.
+// `branch` is call (more follows) or jmp (its ret ends the routine). The
+// routine changes r22..r25 and the status flags only. A routine that
+// uses this must odr-use tinyparticle_saturate32 from C++
+// (flagsTouchedSaturating()), so that it is emitted.
+#define TINYPARTICLE_AVR_SATURATE(branch)                   \
+  "    bld  r25, 7\n"                                       \
+  "    com  r25\n"                    /* bit 7: not T */    \
+  "    " branch " tinyparticle_saturate32\n"
 
 // ---------------------------------------------------------------------------
 // Q16.16 multiply: round(a * b / 2^16), ties away from zero, saturated.
@@ -265,9 +269,7 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
       "8:\n"
       // Too big: saturate with the sign of the result, raise kOverflow.
       "    clr  r1\n"
-      TINYPARTICLE_AVR_SATURATE("r26", "11")
-      "11:\n"
-      "    ret\n"
+      TINYPARTICLE_AVR_SATURATE("jmp")
       // It writes the flags byte, so callers must not keep it in a register.
       ::: "memory");
 }
@@ -599,7 +601,7 @@ __attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
       "    breq 31f\n"
       "30:\n"
       // Too big: saturate with the sign of the result, raise kOverflow.
-      TINYPARTICLE_AVR_SATURATE("r30", "31")
+      TINYPARTICLE_AVR_SATURATE("call")
       "31:\n"
       "    clr  r1\n"
       "    pop  r29\n"
@@ -1360,7 +1362,7 @@ template <>
 struct FixedFast<16, 16> {
   typedef int32_t Raw;
   TINYPARTICLE_ALWAYS_INLINE static Raw multiply(Raw a, Raw b) {
-    flagsTouched();
+    flagsTouchedSaturating();
     Raw r = avrMultiplyQ16(a, b);
     flagsTouched();
     return r;
@@ -1372,7 +1374,7 @@ struct FixedFast<16, 16> {
     // Tell the compiler that the assembly reads kRecip, so that it keeps
     // the table (it cannot see the reference by name either).
     asm volatile("" : : "m"(TrigTables<U>::kRecip[0]));
-    flagsTouched();
+    flagsTouchedSaturating();
     Raw r = avrDivideQ16(a, b);
     flagsTouched();
     return r;
