@@ -139,8 +139,8 @@ struct RodEquations {
   // sketch) d is normalised in full.
   static void setDirection(const Vec<S, 2>& d,
                            Link& link, bool unit) {
-    V scaled;
-    detail::scaledInto(d, link.inverseLength, scaled);
+    const S invL = link.inverseLength;
+    V scaled(d.x * invL, d.y * invL);
     bool near;
     if (unit || !detail::nearUnitByMagnitudes(S())) {
       // |d / L|^2 within 1/256 of 1 (unit), or between 1/2 and 5/4

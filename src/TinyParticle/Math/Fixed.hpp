@@ -107,46 +107,42 @@ struct FixedStorage<32> {
 // taken only on overflow: the wrapped result sits in fixed registers (r22
 // for 32 bits, r24 for 16, the convention's return registers), so one
 // routine saturates it for every site, raising MathError::kOverflow; it
-// changes nothing else but r0 (__tmp_reg__) and the status flags. Inlined
-// with a flag byte and a call to a C++ saturation instead, every site was
-// 6 bytes and 3 cycles longer. The routines' results equal referenceAdd()
-// and referenceSubtract() (AsmClassesTest, `make verify-asm`).
-#define TINYPARTICLE_AVR_RAISE_OVERFLOW                                  \
-  "lds  __tmp_reg__, _ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE\n\t" \
-  "set\n\t"                                                              \
-  "bld  __tmp_reg__, 2\n\t" /* MathError::kOverflow = 4 */               \
-  "sts  _ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE, __tmp_reg__\n\t"
+// changes nothing else but the status flags. Inlined with a flag byte and a
+// call to a C++ saturation instead, every site was 6 bytes and 3 cycles
+// longer. The routines' results equal referenceAdd() and
+// referenceSubtract() (AsmClassesTest, `make verify-asm`). The multiply and
+// the divide saturate here too (FixedAvr.hpp).
+//
+// The low result byte, overwritten anyway, carries the flags byte (ori
+// needs r16 or above; through r0 it took set and bld), and the high byte
+// comes from the low one by subtracting 0x80: 0xFF - 0x80 = 0x7F,
+// 0 - 0x80 = 0x80 (22 bytes where the first version took 34).
+#define TINYPARTICLE_AVR_RAISE_OVERFLOW(reg)                          \
+  "lds  " reg ", _ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE\n\t" \
+  "ori  " reg ", 4\n\t" /* MathError::kOverflow */                    \
+  "sts  _ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE, " reg "\n\t"
 static_assert(uint8_t(MathError::kOverflow) == 4,
               "the saturation routines set bit 2 of the flags");
-// r22..r25 wrapped, of sign s: max() when s (the true sum was positive),
-// else lowest().
+// r22..r25 wrapped, of sign s (bit 7 of r25): max() when s (the true sum
+// was positive), else lowest().
 extern "C" __attribute__((naked, noinline)) inline void
 tinyparticle_saturate32() {
-  asm volatile(TINYPARTICLE_AVR_RAISE_OVERFLOW
-               "com  r25\n\t"      // bit 7: not s
-               "bst  r25, 7\n\t"   // T = not s
-               "lsl  r25\n\t"      // C = not s
-               "sbc  r22, r22\n\t" // 0xFF when not s
-               "com  r22\n\t"      // 0xFF when s
+  asm volatile(TINYPARTICLE_AVR_RAISE_OVERFLOW("r22")
+               "lsl  r25\n\t"       // C = s
+               "sbc  r22, r22\n\t"  // 0xFF when s, else 0
                "mov  r23, r22\n\t"
-               "mov  r24, r22\n\t"
-               "mov  r25, r22\n\t"
-               "lsr  r25\n\t"      // 0x7F when s, else 0
-               "bld  r25, 7\n\t"   // 0x80 when not s
+               "movw r24, r22\n\t"
+               "subi r25, 0x80\n\t" // 0x7F when s, else 0x80
                "ret");
 }
 // r24..r25 wrapped, likewise.
 extern "C" __attribute__((naked, noinline)) inline void
 tinyparticle_saturate16() {
-  asm volatile(TINYPARTICLE_AVR_RAISE_OVERFLOW
-               "com  r25\n\t"
-               "bst  r25, 7\n\t"
+  asm volatile(TINYPARTICLE_AVR_RAISE_OVERFLOW("r24")
                "lsl  r25\n\t"
                "sbc  r24, r24\n\t"
-               "com  r24\n\t"
                "mov  r25, r24\n\t"
-               "lsr  r25\n\t"
-               "bld  r25, 7\n\t"
+               "subi r25, 0x80\n\t"
                "ret");
 }
 #undef TINYPARTICLE_AVR_RAISE_OVERFLOW
@@ -380,7 +376,7 @@ class Fixed {
   // line.
   TINYPARTICLE_ALWAYS_INLINE static Raw compactReciprocal(Raw b) {
     if (b == 0) return divideByZero(kRawOne);
-    if (b > 0) return Raw(positiveReciprocal(URaw(b)));
+    if (b > 0) return Raw(reciprocalOfPositive(URaw(b)));
     const URaw d = magnitude(b);
     // Below kLowestDivisor the quotient is out of range, at it exactly
     // lowest(); above, its magnitude fits kRawMax.
@@ -388,6 +384,15 @@ class Fixed {
       return d == kLowestDivisor ? kRawMin : overflow(true);
     }
     return Raw(-Raw(positiveReciprocal(d)));
+  }
+  // positiveReciprocal(d), folded where d is a constant the compiler
+  // knows (a mass given as a literal): the wide division is then done at
+  // compile time, and the call and its argument moves go.
+  TINYPARTICLE_ALWAYS_INLINE static URaw reciprocalOfPositive(URaw d) {
+    if (TINYPARTICLE_IS_CONSTANT(d) && d > kLowestDivisor) {
+      return URaw(((UWide(1) << (2 * FracBits)) + d / 2) / d);
+    }
+    return positiveReciprocal(d);
   }
   // 1 / d for d > 0: round(2^(2 FracBits) / d), ties up, or kRawMax and
   // kOverflow when that does not fit (d <= kLowestDivisor). Long
@@ -607,7 +612,7 @@ TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocalOfPositive(
     Fixed<I, F> x) {
   typedef Fixed<I, F> T;
   return T::fromRaw(typename T::Raw(
-      T::positiveReciprocal(typename T::URaw(x.raw()))));
+      T::reciprocalOfPositive(typename T::URaw(x.raw()))));
 }
 }  // namespace detail
 

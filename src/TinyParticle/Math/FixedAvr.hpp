@@ -48,6 +48,14 @@ TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
   asm volatile("" : "+m"(MathErrorStore<void>::flags));
 }
 
+// The same for the multiply and the divide, which saturate in
+// tinyparticle_saturate32 (TINYPARTICLE_AVR_SATURATE): the "i" operand also
+// makes the compiler emit that routine, named only in assembly text there.
+TINYPARTICLE_ALWAYS_INLINE void flagsTouchedSaturating() {
+  asm volatile("" : "+m"(MathErrorStore<void>::flags)
+               : "i"(tinyparticle_saturate32));
+}
+
 #define TINYPARTICLE_AVR_FLAGS \
   "_ZN12tinyparticle6detail14MathErrorStoreIvE5flagsE"
 // TrigTables<>::kRecip, kSqrt, kAtan and kSin, likewise.
@@ -94,21 +102,17 @@ TINYPARTICLE_ALWAYS_INLINE void flagsTouched() {
   TINYPARTICLE_AVR_MAGNITUDE32("r25", "r24", "r23", "r22", "1") \
   TINYPARTICLE_AVR_MAGNITUDE32("r21", "r20", "r19", "r18", "2")
 
-// Too big: saturate with the sign of the result (T), raise kOverflow;
-// `tmp` is a free register, then on to `done` (a label further on).
-#define TINYPARTICLE_AVR_SATURATE(tmp, done)               \
-  "    lds  " tmp ", " TINYPARTICLE_AVR_FLAGS "\n"          \
-  "    ori  " tmp ", 4\n"                                   \
-  "    sts  " TINYPARTICLE_AVR_FLAGS ", " tmp "\n"          \
-  "    ldi  r22, 0xff\n"                                    \
-  "    ldi  r23, 0xff\n"                                    \
-  "    ldi  r24, 0xff\n"                                    \
-  "    ldi  r25, 0x7f\n"                                    \
-  "    brtc " done "f\n"               /* 0x7fffffff */     \
-  "    subi r22, 0xff\n"               /* + 1: 0x80000000 */ \
-  "    sbci r23, 0xff\n"                                    \
-  "    sbci r24, 0xff\n"                                    \
-  "    sbci r25, 0xff\n"
+// Too big: saturate with the sign of the result (T), raise kOverflow, in
+// the saturation routine of the adds (Fixed.hpp), which takes the sign
+// from bit 7 of r25, set for max(): 4 words where the inline copy was 13.
+// `branch` is call (more follows) or jmp (its ret ends the routine). The
+// routine changes r22..r25 and the status flags only. A routine that
+// uses this must odr-use tinyparticle_saturate32 from C++
+// (flagsTouchedSaturating()), so that it is emitted.
+#define TINYPARTICLE_AVR_SATURATE(branch)                   \
+  "    bld  r25, 7\n"                                       \
+  "    com  r25\n"                    /* bit 7: not T */    \
+  "    " branch " tinyparticle_saturate32\n"
 
 // ---------------------------------------------------------------------------
 // Q16.16 multiply: round(a * b / 2^16), ties away from zero, saturated.
@@ -164,15 +168,20 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
   asm volatile(
       // T = sign of the result; a and b become magnitudes.
       TINYPARTICLE_AVR_SIGN_AND_MAGNITUDES
-      // Pick a path by the top bytes (r1 is still zero here).
+      // a3 != 0: swap or saturate at 4 (r1 is still zero here).
       "    cpse r25, r1\n"
       "    rjmp 4f\n"
-      "    cpse r21, r1\n"
-      "    rjmp 5f\n"
-      // ---- a3 == 0 and b3 == 0 (|a|, |b| < 256): nine MULs. The complemented
-      // sum: byte 1 in r30, bytes 2..5 in r26, r27, r30, r31 (r30 is reused
-      // once the carries of byte 1 are out).
+      "6:\n"
+      // a3 == 0 now. Columns 0 to 2 take no byte 3, so both paths share
+      // them (56 bytes once, not twice); b3 picks the path after them, with
+      // tst as MUL has overwritten r1: the same 2 cycles as the cpse it
+      // replaces when b3 == 0. Complemented sum: byte 1 in r30, bytes 2..5
+      // in r26, r27, r30, r31 (r30 is reused once the carries of byte 1 are
+      // out).
       TINYPARTICLE_AVR_MUL_COLUMNS_0_TO_2
+      "    tst  r21\n"
+      "    brne 5f\n"
+      // ---- b3 == 0 too (|a|, |b| < 256): nine MULs.
       "    ldi  r31, 0xff\n"          // column 3
       "    mul  r23, r20\n"
       "    sub  r27, r0\n"
@@ -224,10 +233,10 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
       "    movw r24, r20\n"
       "    movw r18, r26\n"
       "    movw r20, r30\n"
+      "    rjmp 6b\n"
       "5:\n"
       // ---- a3 == 0, b3 != 0: twelve MULs; byte 6 goes to r22 once a0 is
       // no longer needed.
-      TINYPARTICLE_AVR_MUL_COLUMNS_0_TO_2
       "    ldi  r31, 0xff\n"          // column 3
       "    mul  r22, r21\n"
       "    sub  r27, r0\n"
@@ -260,9 +269,7 @@ __attribute__((naked, noinline)) inline int32_t avrMultiplyQ16(int32_t,
       "8:\n"
       // Too big: saturate with the sign of the result, raise kOverflow.
       "    clr  r1\n"
-      TINYPARTICLE_AVR_SATURATE("r26", "11")
-      "11:\n"
-      "    ret\n"
+      TINYPARTICLE_AVR_SATURATE("jmp")
       // It writes the flags byte, so callers must not keep it in a register.
       ::: "memory");
 }
@@ -594,7 +601,7 @@ __attribute__((naked, noinline)) inline int32_t avrDivideQ16(int32_t,
       "    breq 31f\n"
       "30:\n"
       // Too big: saturate with the sign of the result, raise kOverflow.
-      TINYPARTICLE_AVR_SATURATE("r30", "31")
+      TINYPARTICLE_AVR_SATURATE("call")
       "31:\n"
       "    clr  r1\n"
       "    pop  r29\n"
@@ -1355,7 +1362,7 @@ template <>
 struct FixedFast<16, 16> {
   typedef int32_t Raw;
   TINYPARTICLE_ALWAYS_INLINE static Raw multiply(Raw a, Raw b) {
-    flagsTouched();
+    flagsTouchedSaturating();
     Raw r = avrMultiplyQ16(a, b);
     flagsTouched();
     return r;
@@ -1367,7 +1374,7 @@ struct FixedFast<16, 16> {
     // Tell the compiler that the assembly reads kRecip, so that it keeps
     // the table (it cannot see the reference by name either).
     asm volatile("" : : "m"(TrigTables<U>::kRecip[0]));
-    flagsTouched();
+    flagsTouchedSaturating();
     Raw r = avrDivideQ16(a, b);
     flagsTouched();
     return r;

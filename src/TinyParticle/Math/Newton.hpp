@@ -257,22 +257,6 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   return true;
 }
 
-// out = v k in 2D: for Fixed through Vec's out-of-line *= (one call in
-// place of two multiplies' calls: a rod's direction, 26 B of the Q16.16
-// lever); for other scalars written out (for Float the copy cost 14 B
-// more).
-template <typename S>
-inline void scaledInto(const Vec<S, 2>& v, S k, Vec<S, 2>& out) {
-  out.x = v.x * k;
-  out.y = v.y * k;
-}
-template <uint8_t I, uint8_t F>
-inline void scaledInto(const Vec<Fixed<I, F>, 2>& v, Fixed<I, F> k,
-                       Vec<Fixed<I, F>, 2>& out) {
-  out = v;
-  out *= k;
-}
-
 // Whether the lone rods test a direction's length by its components'
 // magnitudes (Contacts/RodSolver.hpp, setDirection()): for Float, where
 // |x| is a bit and the square two float multiplies (360 cycles of the
