@@ -11,14 +11,12 @@
 namespace tinyparticle {
 namespace detail {
 
-template <typename Solve, typename S, bool kHasConstraints>
-struct RodState {
-  constexpr RodState() : mRodBits(0), mSolveRods(nullptr), mDt(), mInverseDt() {}
-  uint8_t rodBits() const { return mRodBits; }
-  void setRodBits(uint8_t bits) { mRodBits = bits; }
-  void addRodBits(uint8_t bits) { mRodBits |= bits; }
-  Solve rodSolver() const { return mSolveRods; }
-  void setRodSolver(Solve solve) { mSolveRods = solve; }
+// 1 / dt for the last dt, apart from the solver's pointer (which names the
+// World type): two World types of one scalar share inverseOf(), which the
+// compiler may keep out of line (62 bytes a copy in Q16.16).
+template <typename S>
+struct InverseDt {
+  constexpr InverseDt() : mDt(), mInverseDt() {}
   // 1 / dt, computed again only when dt changes: rarely, so a reciprocal
   // without the fast divide does it (Math/Newton.hpp). dt > 0: the step
   // refuses others.
@@ -31,10 +29,22 @@ struct RodState {
   }
 
  private:
-  uint8_t mRodBits;
-  Solve mSolveRods;
   S mDt;
   S mInverseDt;
+};
+
+template <typename Solve, typename S, bool kHasConstraints>
+struct RodState : InverseDt<S> {
+  constexpr RodState() : mRodBits(0), mSolveRods(nullptr) {}
+  uint8_t rodBits() const { return mRodBits; }
+  void setRodBits(uint8_t bits) { mRodBits = bits; }
+  void addRodBits(uint8_t bits) { mRodBits |= bits; }
+  Solve rodSolver() const { return mSolveRods; }
+  void setRodSolver(Solve solve) { mSolveRods = solve; }
+
+ private:
+  uint8_t mRodBits;
+  Solve mSolveRods;
 };
 
 template <typename Solve, typename S>
