@@ -376,7 +376,7 @@ class Fixed {
   // line.
   TINYPARTICLE_ALWAYS_INLINE static Raw compactReciprocal(Raw b) {
     if (b == 0) return divideByZero(kRawOne);
-    if (b > 0) return Raw(positiveReciprocal(URaw(b)));
+    if (b > 0) return Raw(reciprocalOfPositive(URaw(b)));
     const URaw d = magnitude(b);
     // Below kLowestDivisor the quotient is out of range, at it exactly
     // lowest(); above, its magnitude fits kRawMax.
@@ -384,6 +384,15 @@ class Fixed {
       return d == kLowestDivisor ? kRawMin : overflow(true);
     }
     return Raw(-Raw(positiveReciprocal(d)));
+  }
+  // positiveReciprocal(d), folded where d is a constant the compiler
+  // knows (a mass given as a literal): the wide division is then done at
+  // compile time, and the call and its argument moves go.
+  TINYPARTICLE_ALWAYS_INLINE static URaw reciprocalOfPositive(URaw d) {
+    if (TINYPARTICLE_IS_CONSTANT(d) && d > kLowestDivisor) {
+      return URaw(((UWide(1) << (2 * FracBits)) + d / 2) / d);
+    }
+    return positiveReciprocal(d);
   }
   // 1 / d for d > 0: round(2^(2 FracBits) / d), ties up, or kRawMax and
   // kOverflow when that does not fit (d <= kLowestDivisor). Long
@@ -602,6 +611,9 @@ template <uint8_t I, uint8_t F>
 TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocalOfPositive(
     Fixed<I, F> x) {
   typedef Fixed<I, F> T;
+  // The plain call, no constant fold: a step's dt is not a constant, and
+  // the fold's larger inline body kept RodState::inverseOf() out of line,
+  // once per World type (the shared-engine check).
   return T::fromRaw(typename T::Raw(
       T::positiveReciprocal(typename T::URaw(x.raw()))));
 }
