@@ -611,6 +611,9 @@ template <uint8_t I, uint8_t F>
 TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocalOfPositive(
     Fixed<I, F> x) {
   typedef Fixed<I, F> T;
+  // The plain call, no constant fold: a step's dt is not a constant, and
+  // the fold's larger inline body kept RodState::inverseOf() out of line,
+  // once per World type (the shared-engine check).
   return T::fromRaw(typename T::Raw(
       T::reciprocalOfPositive(typename T::URaw(x.raw()))));
 }
