@@ -158,6 +158,7 @@ struct PlaneConstraint {
       if (!positive) at = -at;
       if (!(at - p->radius > limit)) near[count++] = i;
     }
+    if (count == 0) return;
     const N normal =
         detail::axisNormal(axis, positive, static_cast<const N*>(nullptr));
     for (uint8_t k = 0; k < count; ++k) {
