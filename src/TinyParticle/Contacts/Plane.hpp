@@ -132,12 +132,13 @@ struct PlaneConstraint {
   // -x - r <= offset + margin. (With no call in it, the scan keeps its
   // values in registers: making each contact inside it took 158 B less
   // flash, 9 % more cycles per step for the elastic box in Q16.16 and 15 %
-  // for two float balls, over the 3 % that issue 12 allows.) Then each listed particle's penetration and separating
-  // velocity along the normal are that coordinate of its position (less
-  // its radius) and of its velocity, with the normal's sign (exactly what
-  // the dot products give): penetration = offset - (x - r) for +e,
-  // offset - (-x - r) for -e; the world leaves out an idle contact
-  // (World::addStored()). (Out of line: one copy for every wall.)
+  // for two float balls, over the 3 % that issue 12 allows.) Then each
+  // listed particle's penetration and separating velocity along the
+  // normal are that coordinate of its position (less its radius) and of
+  // its velocity, with the normal's sign (exactly what the dot products
+  // give): penetration = offset - (x - r) for +e, offset - (-x - r) for
+  // -e; the world leaves out an idle contact (World::addStored()). (Out of
+  // line: one copy for every wall.)
   template <class W>
   TINYPARTICLE_NOINLINE static void touchWall(W& world, uint8_t axis,
                                               bool positive, S offset,

@@ -611,9 +611,10 @@ template <uint8_t I, uint8_t F>
 TINYPARTICLE_ALWAYS_INLINE Fixed<I, F> compactReciprocalOfPositive(
     Fixed<I, F> x) {
   typedef Fixed<I, F> T;
-  // The plain call, no constant fold: a step's dt is not a constant, and
-  // the fold's larger inline body kept RodState::inverseOf() out of line,
-  // once per World type (the shared-engine check).
+  // Through reciprocalOfPositive(): a constant x folds. (With the plain
+  // call the two-World-types scene took 46 B more and BouncingBalls 14 B;
+  // the inverse of dt, kept out of line, is InverseDt<S>'s, shared by
+  // every World type: the shared-engine check.)
   return T::fromRaw(typename T::Raw(
       T::reciprocalOfPositive(typename T::URaw(x.raw()))));
 }
