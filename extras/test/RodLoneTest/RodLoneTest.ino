@@ -3,7 +3,8 @@
 // chains' elimination. Each case that solve tells apart is checked against
 // the chains' solve of the same rod (Testing/LoneRodChecks.hpp): the moving
 // end a or b, a fixed particle or an anchor at the other end, a slow or a
-// fast turn (second order, or the closed form). Also: the lever keeps its
+// fast turn (second order, or the series of the closed form: the chains'
+// solve takes the closed form itself). Also: the lever keeps its
 // energy at 1,024 and 64 steps a second, and a rod whose end was moved far
 // off its length comes back to it. (RodLone3DTest has the 3D case.)
 #include <AUnit.h>
@@ -19,7 +20,7 @@ typedef LoneRodChecks<S, 2> Checks;
 Checks::W gWorld;
 
 // The lever from level: slow turns at 256 steps a second, fast ones (more
-// than 1/16 rad a step near the bottom: the closed form) at 64.
+// than 1/16 rad a step near the bottom: the closed form's series) at 64.
 test(loneMatchesChains) {
   const Vec2<S> start(0.15, 0.0), rest;
   const LoneHolder holders[3] = {kLoneEndIsA, kLoneEndIsB, kLoneAnchored};

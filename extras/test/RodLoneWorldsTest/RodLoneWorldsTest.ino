@@ -93,7 +93,7 @@ Run Run::of(S dt, uint16_t steps) {
 }
 
 // Slow turns at 1/256 s (0.03 rad a step: second order), fast ones at
-// 1/64 s (0.12 rad: the closed form), 1 s each.
+// 1/64 s (0.12 rad: the closed form's series), 1 s each.
 test(oneSlotDumbbell) {
   const S dts[2] = {S(1.0 / 256), S(1.0 / 64)};
   const uint16_t counts[2] = {256, 64};

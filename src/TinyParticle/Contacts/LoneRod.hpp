@@ -3,9 +3,9 @@
 // A pendulum, a lever, a Newton's cradle: no rod shares a particle with
 // another, so there is nothing to eliminate, and each rod is solved in one
 // pass with the step equations of the chains' solve (Contacts/RodSolver.hpp:
-// positionSpeed(), exact at any turn), about 24 multiplies per rod and step
-// in 2D, no division and no square root (not even when it turns fast, or
-// at set-up: Math/Newton.hpp).
+// positionSpeed(), with a term of the closed form's series at a fast turn),
+// about 24 multiplies per rod and step in 2D, no division and no square
+// root (not even when it turns fast, or at set-up: Math/Newton.hpp).
 //
 // The code is in two parts (issue 12): LoneRod<S, Dim, kEnds>, the
 // solves of one rod, a template over the scalar and dimension alone, so
@@ -43,7 +43,7 @@
 //   rods in Q16.16 keep their energy better this way: the 5 cm pendulum's
 //   error at dt = 1/256 s fell from 1.8 % to 0.6 % of its swing. A step in
 //   which a rod turned by more than 1/16 rad ends with unit directions: at
-//   such turns the closed form's terms are large, and |u| = 1 + e would put
+//   such turns the drop's terms are large, and |u| = 1 + e would put
 //   the end e of them off (a lever flung at 30 m/s by a move of the sketch
 //   kept swinging 3 % off its length). Their error, halved all the same, is
 //   mended by half a step: it converges.

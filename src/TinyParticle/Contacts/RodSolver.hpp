@@ -17,8 +17,8 @@
 //     everything a speed, so that fixed point keeps its precision where the
 //     correction of a position is a fraction of a unit (Q16.16 at 1 kHz).
 //     The length error the rod has now, L - a, is solved for too but
-//     mended by moving the ends alone. A rod that turns by more than
-//     1/16 rad in a step gets its exact length in closed form instead
+//     mended by moving the ends alone. A rod of a chain that turns by more
+//     than 1/16 rad in a step gets its exact length in closed form instead
 //     (positionSpeed()); along a chain, further passes then take in what
 //     its neighbours did. Where they converge slowly or not at all (a
 //     whip's end turning by tens of degrees in a step), the step is undone
@@ -250,9 +250,9 @@ struct RodEquations {
   // velocity solve would leave a little of it across the rod every step
   // (Q16.16 pendulums gained a few % a minute that way), and rods that
   // cannot all be held (a loop of impossible lengths) would pump speed
-  // into the world. A rod that turns faster takes the exact form, error
-  // included (`error` becomes 0); a fast rod that is off its length by
-  // more than L/16 is not one that turns but one that the others keep
+  // into the world. A chain's rod that turns faster takes the exact form,
+  // error included (`error` becomes 0); a fast rod that is off its length
+  // by more than L/16 is not one that turns but one that the others keep
   // from its length (or that the sketch moved): position only.
   //
   // The exact form's drop, dt s^2 / (L + sqrt(L^2 - (dt s)^2)), is
@@ -260,6 +260,19 @@ struct RodEquations {
   // square of the turn that decides `turning`: no division, no square root.
   // `unit`: the directions are unit vectors (the chains'), else d / L
   // (lone rods: Contacts/LoneRod.hpp), whose error is half of L - a.
+  //
+  // Lone rods take, at a fast turn, the first two terms of the exact
+  // drop's series in h, dt s^2 / 2L (1 + h / 2), not the exact form (issue
+  // 12: 300 B of a Q16.16 lever's 5 KB); the error included is left to the
+  // move, as at a slow turn. What the series' rest leaves, about L t^6 /
+  // 16 of length a step at a turn of t rad, is 0.6 um at t = 0.2 (a 0.15 m
+  // lever's bottom at 64 steps a second), mended the next step as any
+  // length error. With the first term only it is L t^4 / 8, which the
+  // move takes out of the speed across the rod (t^4 / 4 of the energy a
+  // step: 0.3 % a second for a 0.2 m dumbbell at 0.12 rad a step), and
+  // the lone rods' ends drifted 1.5 mm from the chains' in a second
+  // (RodLone3DTest). The chains' solve keeps the exact form: a whip's end turns by
+  // tens of degrees a step, where the series fails.
   static S positionSpeed(const V& d, const V& w, const V& u, S radial,
                          const Link& link, const Pass& pass, bool unit,
                          S& error, bool& turning) {
@@ -272,23 +285,26 @@ struct RodEquations {
     const S invL = link.inverseLength;
     error = detail::differenceOutOfLine(length, f.along);
     if (!unit) error = detail::half(error);  // u = d / L: lone rods
-    const S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
+    S drop = detail::half(byDt(f.across2)) * invL;  // dt s^2 / 2L
     const S halfTurn2 = byDt(drop) * invL;  // (dt s / L)^2 / 2
     turning = detail::isAboveNonNegative(halfTurn2, S(1.0 / 512));
+    if (turning) {
+      // Far off: the offset across u is a move too, not a turn.
+      if (!detail::isBelowNonNegative(fabs(error) * invL, S(1.0 / 16))) {
+        return detail::negativeOutOfLine(f.radial);
+      }
+      if (unit) {
+        const S speed = detail::differenceOutOfLine(
+            detail::differenceOutOfLine(error * invDt, f.radial),
+            drop * detail::turnDropFactor(halfTurn2));
+        error = S();
+        return speed;
+      }
+      drop = detail::sumOutOfLine(drop, detail::half(drop * halfTurn2));
+    }  // (Lone rods: above.)
     // (Its sums out of line: Math/Newton.hpp.)
-    if (!turning) {
-      return detail::differenceOutOfLine(detail::negativeOutOfLine(f.radial),
-                                         drop);
-    }
-    // Far off: the offset across u is a move too, not a turn.
-    if (!detail::isBelowNonNegative(fabs(error) * invL, S(1.0 / 16))) {
-      return detail::negativeOutOfLine(f.radial);
-    }
-    const S speed = detail::differenceOutOfLine(
-        detail::differenceOutOfLine(error * invDt, f.radial),
-        drop * detail::turnDropFactor(halfTurn2));
-    error = S();
-    return speed;
+    return detail::differenceOutOfLine(detail::negativeOutOfLine(f.radial),
+                                       drop);
   }
 
 };
