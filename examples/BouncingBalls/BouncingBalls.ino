@@ -42,7 +42,7 @@ RealTimeLoop timing(128, 8);
 
 const uint32_t kRunSteps = 6 * 128UL;  // 6 s of simulated time
 bool drawing = false;
-uint16_t maxIterations = 0;
+uint8_t maxIterations = 0;
 
 // A label and a number (one routine for every field: less flash than a
 // pair of calls at each).
