@@ -22,8 +22,8 @@
 // normalizeByMultiplies() (the inverse square root above); the rods', at
 // set-up and on rare steps, by unitBySteps(), which in Fixed takes more
 // Newton's steps on the vector itself, with no reduction nor first guess
-// (the chains' turn factor takes them on a scalar: inverseSqrtFromOne()):
-// a Fixed world with rods and no balls links no inverseSqrt() (issue 12).
+// (and the chains' turn factor a square root by Heron's steps): a Fixed
+// world with rods and no balls links no inverseSqrt() (issue 12).
 #pragma once
 
 #include <stdint.h>
@@ -233,31 +233,10 @@ template <typename S, uint8_t N>
 inline bool unitBySteps(Vec<S, N>& v) {
   return normalizeByMultiplies(v);
 }
-// Fixed: 1 / sqrt(q) for q in [1/4, 3), by Newton's steps y <- y (1.5 -
-// q y^2 / 2) from y = 1, with no reduction and no first guess
-// (inverseSqrt(), above, has both: about 380 B of Q16.16 code). In l = y
-// sqrt(q), a step is l <- l (1.5 - l^2 / 2); the first takes q / 2 for q,
-// l <- l (1.5 - l^2 / 4), which brings l from [1/2, sqrt(3)) into [0.71,
-// 1.42] (q = 3 would stop the plain step at 0); from there four plain
-// steps leave 6e-4 (enough for 10 fraction bits), five 5e-7 (20 bits),
-// six 3e-13. About 18 multiplies: for the chains' rare steps
-// (turnDropFactor()), where flash counts and cycles hardly do (issue 12).
-template <uint8_t I, uint8_t F>
-TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrtFromOne(Fixed<I, F> q) {
-  typedef Fixed<I, F> S;
-  const uint8_t kSteps = F <= 10 ? 5 : (F <= 20 ? 6 : 7);
-  S y = S(1);
-  S stepQ = half(q);  // the first step's (see above; the later steps mend its rounding)
-  for (uint8_t i = 0; i < kSteps; ++i) {
-    y *= S(1.5) - half(stepQ * y * y);
-    stepQ = q;
-  }
-  return y;
-}
 // Fixed: v scaled by powers of two, then Newton's steps from below on v
-// itself, v <- v (1.5 - |v|^2 / 2) in units of the length sought (as in
-// inverseSqrtFromOne(), whose separate routine and call cost the lever
-// about 100 B more). Three times the multiplies of
+// itself, v <- v (1.5 - |v|^2 / 2) in units of the length sought, with
+// no inverse square root apart (from 1, with its own routine and call:
+// the lever's 100 B more). About three times the multiplies of
 // normalizeByMultiplies(): the balls' contact normals, taken every step,
 // keep that one.
 // Coarse formats (10 fraction bits or fewer: Q24.8) keep the balls' routine:
@@ -352,9 +331,9 @@ inline Float turnDropFactor(Float h) {
 // whose term in h^n is below 1.4 (1/32)^n there: cut after the last term
 // that reaches half a unit of the format (h^3 for 16 fraction bits: the
 // rest is below 9e-7; h for 8 bits: below 5e-4). Beyond (rare: a whip)
-// the formula, with sqrt(m) = m / sqrt(m) by inverseSqrtFromOne(), m =
-// 1 - 2h brought into [1/4, 1) by powers of 4 (exact) and the root scaled
-// back by halvings, and the compact reciprocal (linked anyway for 1 / L and 1 / dt): a Fixed
+// the formula, with sqrt(m) by Heron's steps and the compact reciprocal
+// (linked anyway for 1 / L and 1 / dt), m = 1 - 2h brought into [1/4, 1)
+// by powers of 4 (exact) and the root scaled back by halvings: a Fixed
 // world's rods link no inverseSqrt() (issue 12: 380 B of Q16.16).
 template <uint8_t I, uint8_t F>
 Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
@@ -383,7 +362,13 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
     m = sumOutOfLine(m, m);
     ++halvings;
   }
-  S root = m * inverseSqrtFromOne(m);
+  // sqrt(m) by Heron's steps r <- (r + m / r) / 2 from r = 1, which fall
+  // to it from above: from m = 1/4, five leave 1e-15 (a long division
+  // each, for a whip's rare step: 150 B less than Newton's steps from 1).
+  S root = S(1);
+  for (uint8_t i = 0; i < 5; ++i) {
+    root = half(sumOutOfLine(root, m * reciprocalByMultiplies(root)));
+  }
   for (; halvings > 0; --halvings) root = half(root);
   const S r = reciprocalByMultiplies(sumOutOfLine(S(1), root));
   return sumOutOfLine(r, r);
