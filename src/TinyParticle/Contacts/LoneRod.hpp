@@ -87,14 +87,12 @@ struct LoneRod {
   // - else (RATTLE): the new direction (a unit vector after a fast turn,
   //   pass.turned), and the ends' relative speed along it, r, taken out as
   //   a change -r (a gets (-r) w, which is -(r w) to the bit, as a product
-  //   rounds ties away from zero; b gets (-r) w - (-r) = r - r w, or,
-  //   with two movable ends (TwoEnds), its own share; in fixed point all
-  //   but r = S::lowest(), which -r saturates: a relative speed no step
-  //   reaches).
+  //   rounds ties away from zero; b gets (-r) w - (-r) = r - r w; in fixed
+  //   point all but r = S::lowest(), which -r saturates: a relative speed
+  //   no step reaches).
   TINYPARTICLE_NOINLINE static void solve(P* particles, uint8_t a, uint8_t b,
                                           Link& link, Pass& pass) {
-    typename EndsOf<kEnds == LoneEnds::kTwoMovable, void>::Type ends(
-        particles, a, b);
+    const Ends ends(particles, a, b);
     if (ends.isFixed()) return;
     detail::Unset<V> span;  // written whole by Eq::span()
     V& d = span.value;
@@ -171,48 +169,6 @@ struct LoneRod {
       }
       if (movingA != nullptr) (movingA->*field).addScaled(u, toA);
     }
-  };
-  // The two movable particles of a world of one constraint slot
-  // (kTwoMovable): an end that does not move has inverse mass 0 (the
-  // step marked it static from that), so that each end takes its share,
-  // w / (wa + wb), of a change (b against u), and one that does not move
-  // takes a change of 0: no test of which end moves past the velocities
-  // (an immovable end is at rest, whatever its velocity field holds).
-  // Ends' tests of null ends cost rung 9 of the memory ladder 200 B more.
-  struct TwoEnds {
-    TINYPARTICLE_ALWAYS_INLINE TwoEnds(P* particles, uint8_t ia, uint8_t ib)
-        : endA(&particles[ia]), endB(&particles[ib]) {}
-    P* endA;
-    P* endB;
-    S shareB;  // -wb / (wa + wb), set by shareOfA()
-
-    bool isFixed() const { return endA->isStatic() && endB->isStatic(); }
-    TINYPARTICLE_ALWAYS_INLINE const V& relativeVelocity(V& w) const {
-      if (!endA->isStatic()) w = endA->velocity;
-      if (!endB->isStatic()) w -= endB->velocity;
-      return w;
-    }
-    S shareOfA() {
-      const S inverse = detail::reciprocalByMultiplies(
-          detail::sumOutOfLine(endA->inverseMass, endB->inverseMass));
-      shareB = detail::negativeOutOfLine(endB->inverseMass * inverse);
-      return endA->inverseMass * inverse;
-    }
-    // (Written out: out of line, its two calls and saved registers took
-    // 50 B more.)
-    TINYPARTICLE_ALWAYS_INLINE void pushApart(V P::*field, const V& u,
-                                              S amount, S share) const {
-      (endA->*field).addScaled(u, amount * share);
-      (endB->*field).addScaled(u, amount * shareB);
-    }
-  };
-  template <bool kTwo, class>
-  struct EndsOf {
-    typedef TwoEnds Type;
-  };
-  template <class Unused>
-  struct EndsOf<false, Unused> {
-    typedef Ends Type;
   };
 };
 
