@@ -140,16 +140,7 @@ struct RodEquations {
   static void setDirection(const Vec<S, 2>& d,
                            Link& link, bool unit) {
     const S invL = link.inverseLength;
-    detail::Unset<V> scaledStore;
-    V& scaled = scaledStore.value;
-    if (detail::isFixedScalar(S())) {
-      // (Through Vec's *=, linked anyway for the unit vectors: 26 B less
-      // in Q16.16; written out, Float's is 8 B smaller.)
-      scaled = d;
-      scaled *= invL;
-    } else {
-      scaled = V(d.x * invL, d.y * invL);
-    }
+    V scaled(d.x * invL, d.y * invL);
     bool near;
     if (unit || !detail::nearUnitByMagnitudes(S())) {
       // |d / L|^2 within 1/256 of 1 (unit), or between 1/2 and 5/4

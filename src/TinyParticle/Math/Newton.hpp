@@ -293,16 +293,6 @@ TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Float, N>& v) {
   return true;
 }
 
-// Whether S is a Fixed format (for choices of code size).
-template <typename S>
-constexpr bool isFixedScalar(S) {
-  return false;
-}
-template <uint8_t I, uint8_t F>
-constexpr bool isFixedScalar(Fixed<I, F>) {
-  return true;
-}
-
 // Whether the lone rods test a direction's length by its components'
 // magnitudes (Contacts/RodSolver.hpp, setDirection()): for Float, where
 // |x| is a bit and the square two float multiplies (360 cycles of the
