@@ -116,8 +116,7 @@ struct LoneRod {
       amount = detail::negativeOutOfLine(radial);
     }
     const S share = ends.shareOfA();
-    ends.pushApart(&P::velocity, u, amount, share);
-    if (!detail::isZero(error)) ends.pushApart(&P::position, u, error, share);
+    ends.pushApart(u, amount, error, share);
   }
 
  private:
@@ -158,16 +157,24 @@ struct LoneRod {
              detail::reciprocalByMultiplies(detail::sumOutOfLine(
                  movingA->inverseMass, movingB->inverseMass));
     }
-    // A change `amount` of the ends' relative (field: velocity or
-    // position) along u: all of it to the one movable end, or `share` of
-    // it to a and the rest against u to b.
-    void pushApart(V P::*field, const V& u, S amount, S share) const {
-      S toA = amount;
-      if (bMoves()) {
-        toA = bothMove() ? amount * share : S();
-        (movingB->*field).addScaled(u, toA - amount);
-      }
-      if (movingA != nullptr) (movingA->*field).addScaled(u, toA);
+    // A change `amount` of the ends' relative velocity along u, then one
+    // `error` of their relative position (unless 0): all of each to the
+    // one movable end, or `share` of it to a and the rest against u to b.
+    // (Both in one call, a loop over the two fields: two calls cost rung 9
+    // 46 B more, a Float lever 46 B, for 6 B of a Q16.16 lever.)
+    void pushApart(const V& u, S amount, S error, S share) const {
+      V P::*field = &P::velocity;
+      do {
+        S toA = amount;
+        if (bMoves()) {
+          toA = bothMove() ? amount * share : S();
+          (movingB->*field).addScaled(u, toA - amount);
+        }
+        if (movingA != nullptr) (movingA->*field).addScaled(u, toA);
+        amount = error;
+        error = S();
+        field = &P::position;
+      } while (!detail::isZero(amount));
     }
   };
 };

@@ -21,8 +21,8 @@
 // Two unit vectors: the balls' contact normals, taken every step, by
 // normalizeByMultiplies() (the inverse square root above); the rods', at
 // set-up and on rare steps, by unitBySteps(), which in Fixed takes more
-// Newton's steps from 1 and no reduction nor first guess
-// (inverseSqrtFromOne(), which the Fixed turn factor shares): a Fixed
+// Newton's steps on the vector itself, with no reduction nor first guess
+// (and the chains' turn factor a square root by Heron's steps): a Fixed
 // world with rods and no balls links no inverseSqrt() (issue 12).
 #pragma once
 
@@ -36,6 +36,37 @@
 
 namespace tinyparticle {
 namespace detail {
+
+// a + b, a - b and -a out of line: a Fixed sum saturates in about 14 B of
+// code where it is written out, a call takes 4 and about 10 cycles more.
+// For rare paths (a fast turn, a rod whose two ends move), and for the
+// lone rods' solve (about 90 B of Q16.16, 46 cycles of the lever's step).
+// Other scalars: the plain operations.
+template <typename S>
+inline S sumOutOfLine(S a, S b) {
+  return a + b;
+}
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_NOINLINE Fixed<I, F> sumOutOfLine(Fixed<I, F> a, Fixed<I, F> b) {
+  return a + b;
+}
+template <typename S>
+inline S differenceOutOfLine(S a, S b) {
+  return a - b;
+}
+template <uint8_t I, uint8_t F>
+TINYPARTICLE_NOINLINE Fixed<I, F> differenceOutOfLine(Fixed<I, F> a,
+                                                      Fixed<I, F> b) {
+  return a - b;
+}
+template <typename S>
+inline S negativeOutOfLine(S a) {
+  return -a;
+}
+template <uint8_t I, uint8_t F>
+inline Fixed<I, F> negativeOutOfLine(Fixed<I, F> a) {
+  return differenceOutOfLine(Fixed<I, F>(), a);
+}
 
 // Other scalars (a host's double) have a compact divide and square root:
 // for them the functions below are the plain formulas. Newton's steps are
@@ -164,7 +195,8 @@ TINYPARTICLE_NOINLINE bool normalizeByMultiplies(Vec<Float, N>& v) {
 // bit is that of all magnitudes' raw bits or-ed together: it is tracked
 // in those bits (unsigned shifts), which costs no fabs() and no compares
 // of Fixed values.
-template <uint8_t I, uint8_t F, uint8_t N>
+// (kUp: into [2^kUp / 2, 2^kUp) instead.)
+template <uint8_t kUp = 0, uint8_t I, uint8_t F, uint8_t N>
 inline bool scaleLargestIntoHalfToOne(Vec<Fixed<I, F>, N>& v) {
   typedef Fixed<I, F> S;
   typedef typename S::URaw U;
@@ -174,10 +206,18 @@ inline bool scaleLargestIntoHalfToOne(Vec<Fixed<I, F>, N>& v) {
     bits = U(bits | (r < 0 ? U(U(0) - U(r)) : U(r)));
   }
   if (bits == 0) return false;
-  const U kHalf = U(U(1) << (F - 1));  // the raw bits of 1/2
+  const U kHalf = U(U(1) << (F - 1 + kUp));  // the raw bits of 2^kUp / 2
   while (bits < kHalf) {
     bits = U(bits << 1);
-    v += v;
+    // (The rods' (kUp > 0), for set-up and rare steps, through the *= that
+    // they link anyway: Vec's += then stays written out where a sketch
+    // uses it once, 22 B less of rung 9. The balls', every step, keep the
+    // faster add.)
+    if (kUp > 0) {
+      v *= S(2);
+    } else {
+      v += v;
+    }
   }
   while (bits >= U(kHalf << 1)) {
     bits = U(bits >> 1);
@@ -201,30 +241,10 @@ template <typename S, uint8_t N>
 inline bool unitBySteps(Vec<S, N>& v) {
   return normalizeByMultiplies(v);
 }
-// Fixed: 1 / sqrt(q) for q in [1/4, 3), by Newton's steps y <- y (1.5 -
-// q y^2 / 2) from y = 1, with no reduction and no first guess
-// (inverseSqrt(), above, has both: about 380 B of Q16.16 code). In l = y
-// sqrt(q), a step is l <- l (1.5 - l^2 / 2); the first takes q / 2 for q,
-// l <- l (1.5 - l^2 / 4), which brings l from [1/2, sqrt(3)) into [0.71,
-// 1.42] (q = 3 would stop the plain step at 0); from there four plain
-// steps leave 6e-4 (enough for 10 fraction bits), five 5e-7 (20 bits),
-// six 3e-13. About 18 multiplies: for the rods' set-up and rare steps
-// (unitBySteps(), turnDropFactor()), where flash counts and cycles hardly
-// do (issue 12).
-template <uint8_t I, uint8_t F>
-TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrtFromOne(Fixed<I, F> q) {
-  typedef Fixed<I, F> S;
-  const uint8_t kSteps = F <= 10 ? 5 : (F <= 20 ? 6 : 7);
-  S y = S(1);
-  S stepQ = half(q);  // the first step's (see above; the later steps mend its rounding)
-  for (uint8_t i = 0; i < kSteps; ++i) {
-    y *= S(1.5) - half(stepQ * y * y);
-    stepQ = q;
-  }
-  return y;
-}
-// Fixed: v scaled as above, so that |v|^2 is in [1/4, 3) (N <= 3), then
-// v (1 / sqrt(|v|^2)) by inverseSqrtFromOne(). Twice the multiplies of
+// Fixed: v scaled by powers of two, then Newton's steps from below on v
+// itself, v <- v (1.5 - |v|^2 / 2) in units of the length sought, with
+// no inverse square root apart (from 1, with its own routine and call:
+// the lever's 100 B more). About three times the multiplies of
 // normalizeByMultiplies(): the balls' contact normals, taken every step,
 // keep that one.
 // Coarse formats (10 fraction bits or fewer: Q24.8) keep the balls' routine:
@@ -235,8 +255,24 @@ TINYPARTICLE_NOINLINE Fixed<I, F> inverseSqrtFromOne(Fixed<I, F> q) {
 template <uint8_t I, uint8_t F, uint8_t N>
 TINYPARTICLE_NOINLINE bool unitBySteps(Vec<Fixed<I, F>, N>& v) {
   if (F <= 10) return normalizeByMultiplies(v);
-  if (!scaleLargestIntoHalfToOne(v)) return false;
-  v *= inverseSqrtFromOne(dotOutOfLine(v, v));
+  typedef Fixed<I, F> S;
+  // The largest component into [R / 2, R), R = 2^kUp, then v brought to
+  // length 2R, as large as the format lets |v|^2 be: the rounding of v at
+  // each step below turns it by far less than a unit of the result.
+  // (|v|^2 up to 4 R^2 = 2^(2 kUp + 2) below 2^(I - 1), and 1 / 8R^2 a
+  // value of the format.)
+  const uint8_t kUp = I < 4 ? 0
+                      : (I - 4) / 2 < (F - 3) / 2 ? (I - 4) / 2 : (F - 3) / 2;
+  if (!scaleLargestIntoHalfToOne<kUp>(v)) return false;
+  // l = |v| / 2R, in [1/4, sqrt(3) / 2): l <- l (1.5 - l^2 / 2) rises
+  // to 1 from below, within 3e-7 after seven steps (20 fraction bits),
+  // 1e-13 after eight.
+  const uint8_t kSteps = F <= 20 ? 7 : 8;
+  const S kHalfOverLength2 = S(1.0 / (8 * double(1ul << (2 * kUp))));
+  for (uint8_t i = 0; i < kSteps; ++i) {
+    v *= differenceOutOfLine(S(1.5), dotOutOfLine(v, v) * kHalfOverLength2);
+  }
+  v *= S(1.0 / (2 * double(1ul << kUp)));
   return true;
 }
 
@@ -271,37 +307,6 @@ constexpr bool nearUnitByMagnitudes(Fixed<I, F>) {
   return false;
 }
 
-// a + b, a - b and -a out of line: a Fixed sum saturates in about 14 B of
-// code where it is written out, a call takes 4 and about 10 cycles more.
-// For rare paths (a fast turn, a rod whose two ends move), and for the
-// lone rods' solve (about 90 B of Q16.16, 46 cycles of the lever's step).
-// Other scalars: the plain operations.
-template <typename S>
-inline S sumOutOfLine(S a, S b) {
-  return a + b;
-}
-template <uint8_t I, uint8_t F>
-TINYPARTICLE_NOINLINE Fixed<I, F> sumOutOfLine(Fixed<I, F> a, Fixed<I, F> b) {
-  return a + b;
-}
-template <typename S>
-inline S differenceOutOfLine(S a, S b) {
-  return a - b;
-}
-template <uint8_t I, uint8_t F>
-TINYPARTICLE_NOINLINE Fixed<I, F> differenceOutOfLine(Fixed<I, F> a,
-                                                      Fixed<I, F> b) {
-  return a - b;
-}
-template <typename S>
-inline S negativeOutOfLine(S a) {
-  return -a;
-}
-template <uint8_t I, uint8_t F>
-inline Fixed<I, F> negativeOutOfLine(Fixed<I, F> a) {
-  return differenceOutOfLine(Fixed<I, F>(), a);
-}
-
 // 2 / (1 + sqrt(1 - 2h)) for h >= 0: what a rod that turns by t = sqrt(2h)
 // radians in a step drops along itself, in units of the second order
 // form's t^2 / 2 (Contacts/RodSolver.hpp, positionSpeed()). From h = 1/2
@@ -334,10 +339,9 @@ inline Float turnDropFactor(Float h) {
 // whose term in h^n is below 1.4 (1/32)^n there: cut after the last term
 // that reaches half a unit of the format (h^3 for 16 fraction bits: the
 // rest is below 9e-7; h for 8 bits: below 5e-4). Beyond (rare: a whip)
-// the formula, with sqrt(m) = m / sqrt(m) by inverseSqrtFromOne() (linked
-// anyway for the rods' unit vectors), m = 1 - 2h brought into [1/4, 1) by
-// powers of 4 (exact) and the root scaled back by halvings, and the
-// compact reciprocal (linked anyway for 1 / L and 1 / dt): a Fixed
+// the formula, with sqrt(m) by Heron's steps and the compact reciprocal
+// (linked anyway for 1 / L and 1 / dt), m = 1 - 2h brought into [1/4, 1)
+// by powers of 4 (exact) and the root scaled back by halvings: a Fixed
 // world's rods link no inverseSqrt() (issue 12: 380 B of Q16.16).
 template <uint8_t I, uint8_t F>
 Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
@@ -366,7 +370,13 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
     m = sumOutOfLine(m, m);
     ++halvings;
   }
-  S root = m * inverseSqrtFromOne(m);
+  // sqrt(m) by Heron's steps r <- (r + m / r) / 2 from r = 1, which fall
+  // to it from above: from m = 1/4, five leave 1e-15 (a long division
+  // each, for a whip's rare step: 150 B less than Newton's steps from 1).
+  S root = S(1);
+  for (uint8_t i = 0; i < 5; ++i) {
+    root = half(sumOutOfLine(root, m * reciprocalByMultiplies(root)));
+  }
   for (; halvings > 0; --halvings) root = half(root);
   const S r = reciprocalByMultiplies(sumOutOfLine(S(1), root));
   return sumOutOfLine(r, r);
