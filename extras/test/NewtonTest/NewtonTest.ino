@@ -65,7 +65,8 @@ static void checkInverseSqrt(Raw q) {
 }
 
 // Both unit vector routines: the balls' (normalizeByMultiplies) and the
-// rods' (unitBySteps: Newton's steps from 1, the same bound).
+// rods' (unitBySteps: Newton's steps on the vector itself, the same
+// bound).
 static void checkUnit(Raw a, Raw b) {
   if (a == 0 && b == 0) return;  // (below)
   const double x = a * kUnit, y = b * kUnit;
