@@ -271,8 +271,8 @@ struct RodEquations {
   // move takes out of the speed across the rod (t^4 / 4 of the energy a
   // step: 0.3 % a second for a 0.2 m dumbbell at 0.12 rad a step), and
   // the lone rods' ends drifted 1.5 mm from the chains' in a second
-  // (RodLone3DTest). The chains' solve keeps the exact form: a whip's end turns by
-  // tens of degrees a step, where the series fails.
+  // (RodLone3DTest). The chains' solve keeps the exact form: a whip's end
+  // turns by tens of degrees a step, where the series fails.
   static S positionSpeed(const V& d, const V& w, const V& u, S radial,
                          const Link& link, const Pass& pass, bool unit,
                          S& error, bool& turning) {

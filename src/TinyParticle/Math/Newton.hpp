@@ -371,8 +371,9 @@ Fixed<I, F> turnDropFactor(Fixed<I, F> h) {
     ++halvings;
   }
   // sqrt(m) by Heron's steps r <- (r + m / r) / 2 from r = 1, which fall
-  // to it from above: from m = 1/4, five leave 1e-15 (a long division
-  // each, for a whip's rare step: 150 B less than Newton's steps from 1).
+  // to it from above: from m = 1/4, five leave 1e-15 (a reciprocal by
+  // multiplies each, for a whip's rare step: 150 B less than Newton's
+  // steps from 1).
   S root = S(1);
   for (uint8_t i = 0; i < 5; ++i) {
     root = half(sumOutOfLine(root, m * reciprocalByMultiplies(root)));
