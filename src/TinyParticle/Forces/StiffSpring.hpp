@@ -44,10 +44,55 @@ namespace tinyparticle {
 
 namespace detail {
 
+// The exponential's parts while it is summed and squared (see
+// stiffSpringGains()): x = X, term its last term, r = exp(X) - I - X so
+// far. 2x2 matrices, row-major.
+struct StiffSpringSeries {
+  float x[4];
+  float term[4];
+  float r[4];
+};
+
+// out = a b, each entry one product, one product and one sum in this
+// order: the same bits on every platform. (out may alias neither.)
+TINYPARTICLE_NOINLINE inline void stiffSpringProduct(const float* a,
+                                                     const float* b,
+                                                     float* out) {
+  for (uint8_t i = 0; i < 4; i += 2) {
+    out[i] = a[i] * b[0] + a[i + 1] * b[2];
+    out[i + 1] = a[i] * b[1] + a[i + 1] * b[3];
+  }
+}
+
+// The series' next term, term X / n, added to r.
+TINYPARTICLE_NOINLINE inline void addSeriesTerm(StiffSpringSeries& s,
+                                                uint8_t n) {
+  float next[4];
+  stiffSpringProduct(s.term, s.x, next);
+  for (uint8_t i = 0; i < 4; ++i) {
+    s.term[i] = next[i] / n;
+    s.r[i] += s.term[i];
+  }
+}
+
+// X doubled: exp(2Y) - I = 2N + N^2 with N = exp(Y) - I, so r(2Y) =
+// 2 r(Y) + N^2.
+TINYPARTICLE_NOINLINE inline void doubleSeries(StiffSpringSeries& s) {
+  float n[4], square[4];
+  for (uint8_t i = 0; i < 4; ++i) n[i] = s.x[i] + s.r[i];
+  stiffSpringProduct(n, n, square);
+  for (uint8_t i = 0; i < 4; ++i) {
+    s.r[i] = 2.0f * s.r[i] + square[i];
+    s.x[i] *= 2.0f;
+  }
+}
+
 // Gains A and B for x'' = -w2 x - c x' and step h (see above). Setup-time
-// code: about two hundred float operations.
-inline void stiffSpringGains(float w2, float c, float h, float* gainA,
-                             float* gainB) {
+// code, about two hundred float operations, out of line and in parts:
+// written out, the set-up cost a Q16.16 sketch about 1 KB more (issue 12).
+TINYPARTICLE_NOINLINE inline void stiffSpringGains(float w2, float c, float h,
+                                                   float* gainA,
+                                                   float* gainB) {
   // X = h J / 2^s with J = [[0, 1], [-w2, -c]], small enough for Taylor.
   float scale = h;
   uint8_t squarings = 0;
@@ -57,32 +102,13 @@ inline void stiffSpringGains(float w2, float c, float h, float* gainA,
     scale *= 0.5f;
     ++squarings;
   }
-  float x[4] = {0.0f, scale, -w2 * scale, -c * scale};
-  // r = exp(X) - I - X = X^2/2! + X^3/3! + ...
-  float term[4] = {x[0], x[1], x[2], x[3]};
-  float r[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  for (uint8_t n = 2; n <= 14; ++n) {
-    float t0 = (term[0] * x[0] + term[1] * x[2]) / n;
-    float t1 = (term[0] * x[1] + term[1] * x[3]) / n;
-    float t2 = (term[2] * x[0] + term[3] * x[2]) / n;
-    float t3 = (term[2] * x[1] + term[3] * x[3]) / n;
-    term[0] = t0; term[1] = t1; term[2] = t2; term[3] = t3;
-    for (uint8_t i = 0; i < 4; ++i) r[i] += term[i];
-  }
-  // exp(2Y) - I = 2N + N^2 with N = exp(Y) - I, so the remainder doubles
-  // as r(2Y) = 2 r(Y) + N^2 while X doubles.
-  for (uint8_t i = 0; i < squarings; ++i) {
-    float n[4] = {x[0] + r[0], x[1] + r[1], x[2] + r[2], x[3] + r[3]};
-    float q0 = n[0] * n[0] + n[1] * n[2];
-    float q1 = n[0] * n[1] + n[1] * n[3];
-    float q2 = n[2] * n[0] + n[3] * n[2];
-    float q3 = n[2] * n[1] + n[3] * n[3];
-    r[0] = 2.0f * r[0] + q0;
-    r[1] = 2.0f * r[1] + q1;
-    r[2] = 2.0f * r[2] + q2;
-    r[3] = 2.0f * r[3] + q3;
-    for (uint8_t j = 0; j < 4; ++j) x[j] *= 2.0f;
-  }
+  // r = exp(X) - I - X = X^2/2! + X^3/3! + ..., then X doubled back to h J.
+  StiffSpringSeries s = {{0.0f, scale, -w2 * scale, -c * scale},
+                         {0.0f, scale, -w2 * scale, -c * scale},
+                         {0.0f, 0.0f, 0.0f, 0.0f}};
+  for (uint8_t n = 2; n <= 14; ++n) addSeriesTerm(s, n);
+  while (squarings-- > 0) doubleSeries(s);
+  const float* r = s.r;
   // M = exp(h J) = I + h J + r. Its determinant is e^y with y = -c h; its
   // trace is 2 + y + r11 + r22. e2 = e^y - 1 - y, by series while small.
   const float y = -c * h;
