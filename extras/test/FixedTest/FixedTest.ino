@@ -132,6 +132,91 @@ test(conversionsForEveryFormat) {
   assertEqual(Basics<Q8_8>::conversions(), (uint8_t) 0);
 }
 
+// A value known only at run time is converted by integer steps on the
+// float's bits (Fixed::fromDoubleOutOfLine()), a constant by float steps
+// (referenceFromDouble()): the same result and flag for every class of
+// input the bits' steps tell apart. Every exponent (zero and subnormals,
+// each shift left and right, infinities and NaN), both signs, and at each
+// exponent the significands around its two edges: the bit worth half a
+// unit of the result (below, on and above a tie, with the unit's bit odd
+// and even), and the bit where the scaled value reaches 2^32.
+volatile float gConverted;  // not a constant: the run-time conversion
+
+template <typename T>
+uint8_t mismatchAt(uint32_t bits) {
+  float f;
+  memcpy(&f, &bits, sizeof(f));
+  gConverted = f;
+  clearMathErrors();
+  const typename T::Raw fast = T(double(gConverted)).raw();
+  const uint8_t fastFlags = mathErrors();
+  clearMathErrors();
+  const typename T::Raw reference = T::referenceFromDouble(f);
+  if (fast == reference && fastFlags == mathErrors()) return 0;
+  Serial.print(F("conversion differs at bits 0x"));
+  Serial.println(bits, HEX);
+  return 1;
+}
+
+template <typename T>
+uint16_t conversionMismatches() {
+  uint16_t mismatches = 0;
+  for (uint16_t exponent = 0; exponent < 256; ++exponent) {
+    // The value is m 2^shift units of the result, m the significand.
+    const int16_t shift =
+        int16_t(exponent != 0 ? exponent : 1) - 150 + T::kFracBits;
+    uint32_t m[12] = {0, 1, 0x400000ul, 0x7FFFFFul};
+    uint8_t count = 4;
+    if (shift < 0 && shift >= -24) {  // the half unit is bit -shift - 1
+      const uint32_t half = uint32_t(1) << (-shift - 1);
+      m[count++] = half - 1;
+      m[count++] = half;
+      m[count++] = half + 1;
+      m[count++] = 3 * half;
+      m[count++] = 2 * half - 1;
+    }
+    if (shift > 8 && shift < 32) {  // 2^32 reached at bit 32 - shift
+      const uint32_t top = uint32_t(1) << (32 - shift);
+      m[count++] = top - 1;
+      m[count++] = top;
+      m[count++] = top + 1;
+    }
+    for (uint8_t k = 0; k < count; ++k) {
+      for (uint8_t sign = 0; sign < 2; ++sign) {
+        mismatches += mismatchAt<T>((uint32_t(sign) << 31) |
+                                    (uint32_t(exponent) << 23) |
+                                    (m[k] & 0x7FFFFFul));
+      }
+    }
+  }
+  clearMathErrors();
+  return mismatches;
+}
+
+test(runTimeConversionMatchesConstantsBitForBit) {
+  assertEqual(conversionMismatches<Q16_16>(), (uint16_t) 0);
+  assertEqual(conversionMismatches<Q24_8>(), (uint16_t) 0);
+  assertEqual(conversionMismatches<Q8_8>(), (uint16_t) 0);
+}
+
+// On the PC a double beyond float's range saturates before it is rounded
+// to float (there the rounding would be undefined behaviour); on AVR the
+// same product is an infinity, which saturates too.
+test(runTimeConversionOfLargeDoubles) {
+  volatile double big = 1e30, edge = 4294967296.0;
+  const double huge = big * big;  // 1e60 on the PC
+  clearMathErrors();
+  assertTrue(Q16_16(huge) == Q16_16::largest());
+  assertTrue(Q16_16(-huge) == Q16_16::lowest());
+  assertTrue(Q24_8(double(edge)) == Q24_8::largest());
+  assertTrue(Q8_8(-double(edge)) == Q8_8::lowest());
+  assertEqual(mathErrors(), (uint8_t) MathError::kOverflow);
+  clearMathErrors();
+  volatile double inRange = -12345.6789;
+  assertEqual(Q16_16(double(inRange)).raw(), Q16_16(-12345.6789).raw());
+  assertEqual(mathErrors(), (uint8_t) MathError::kNone);
+}
+
 test(addAndSubtractSaturateAtBothEnds) {
   assertEqual(Basics<Q16_16>::addSubtract(), (uint8_t) 0);
   assertEqual(Basics<Q24_8>::addSubtract(), (uint8_t) 0);

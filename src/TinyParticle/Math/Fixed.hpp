@@ -33,6 +33,7 @@
 #pragma once
 
 #include <stdint.h>
+#include <string.h>
 
 #include "../Configuration.hpp"
 #include "MathErrors.hpp"
@@ -350,6 +351,11 @@ class Fixed {
     return difference;
   }
 
+  // fromDouble() by float steps: what the constructor folds a constant to,
+  // and the reference of the bits' steps for a value known only at run
+  // time (fromDoubleOutOfLine()).
+  static Raw referenceFromDouble(double v) { return fromDouble(v); }
+
   static Raw referenceMultiply(Raw a, Raw b) {
     UWide product = UWide(magnitude(a)) * magnitude(b);
     UWide rounded = (product + (UWide(1) << (FracBits - 1))) >> FracBits;
@@ -521,8 +527,45 @@ class Fixed {
     return v > (unsigned long)kIntMax ? conversionOutOfRange(kRawMax)
                                       : Raw(Raw(v) * kRawOne);
   }
+  // A value known only at run time: fromDouble()'s result, by integer
+  // steps on the float's bits, so that a fixed-point sketch links no float
+  // routine for it (on AVR the float steps took about 620 B: the compares,
+  // both conversions between float and uint32_t, and the code around
+  // them). Checked against fromDouble() at every exponent and rounding
+  // boundary (extras/test/FixedTest).
   TINYPARTICLE_NOINLINE static Raw fromDoubleOutOfLine(double v) {
-    return fromDouble(v);
+    if (sizeof(double) > sizeof(float)) {  // beyond float's range: caught first
+      if (v >= 4294967296.0) return conversionOutOfRange(kRawMax);
+      if (v <= -4294967296.0) return conversionOutOfRange(kRawMin);
+    }
+    const float f = float(v);
+    uint32_t bits;
+    memcpy(&bits, &f, sizeof(bits));
+    return fromFloatBits(bits);
+  }
+  // |f| = m 2^(e - 150) with m the significand (the hidden bit set unless
+  // subnormal, where e counts as 1), so |f| 2^FracBits = m 2^shift.
+  static Raw fromFloatBits(uint32_t bits) {
+    const bool negative = (bits >> 31) != 0;
+    const uint8_t exponent = uint8_t(bits >> 23);
+    uint32_t m = bits & 0x7FFFFFul;
+    if (exponent == 0xFF) {  // NaN gives 0, an infinity saturates
+      return conversionOutOfRange(m != 0 ? Raw(0) : negative ? kRawMin : kRawMax);
+    }
+    if (exponent != 0) m |= 0x800000ul;
+    const int16_t shift = int16_t(exponent != 0 ? exponent : 1) - 150 + FracBits;
+    if (shift >= 0) {
+      // m < 2^24: m 2^shift reaches 2^32 only for shift > 8.
+      if (shift > 8 && (shift > 31 || (m >> (32 - shift)) != 0)) {
+        return conversionOutOfRange(negative ? kRawMin : kRawMax);
+      }
+      return fromRoundedMagnitude(m << shift, negative);
+    }
+    // Ties away from zero: add half a unit of the result, then drop the
+    // bits below it. Below half a unit (shift < -24: m < 2^24) it is 0.
+    const uint8_t down = uint8_t(-shift);
+    return fromRoundedMagnitude(
+        down > 24 ? 0 : (m + (uint32_t(1) << (down - 1))) >> down, negative);
   }
   // Through float on every platform (see the top of the file). Beyond
   // 2^32 the double is out of every format, and its conversion to float
