@@ -36,10 +36,13 @@ void setup() {
   while (!Serial);
   Serial.println(F("Bridge: 7 weights on cables, a 0.5 kg ball falls on them"));
 
-  // The posts, 0.8 m apart, and the weights on a straight line between them.
-  ParticleId previous = world.addFixedParticle(Point(0.1, 0.6), Q16_16(0.02));
+  // The posts, 0.8 m apart, and the weights on a straight line between them,
+  // 0.1 m apart. (Stepped in Q16.16: 0.1 + 0.1 * i would be float arithmetic
+  // at run time, and link the float routines, about 1 KB.)
+  Point where(0.1, 0.6);
+  ParticleId previous = world.addFixedParticle(where, Q16_16(0.02));
   for (uint8_t i = 1; i <= kLinks + 1; ++i) {
-    Point where(0.1 + 0.1 * i, 0.6);
+    where.x += Q16_16(0.1);
     ParticleId next = i <= kLinks
                           ? world.addParticle(where, Q16_16(0.05), Q16_16(0.02))
                           : world.addFixedParticle(where, Q16_16(0.02));
