@@ -89,7 +89,7 @@ TINYPARTICLE_NOINLINE inline void doubleSeries(StiffSpringSeries& s) {
 
 // Gains A and B for x'' = -w2 x - c x' and step h (see above). Setup-time
 // code, about two hundred float operations, out of line and in parts:
-// written out, the set-up cost a Q16.16 sketch about 1 KB more (issue 12).
+// written out, it cost the Spring example 1,144 B more (issue 12).
 TINYPARTICLE_NOINLINE inline void stiffSpringGains(float w2, float c, float h,
                                                    float* gainA,
                                                    float* gainB) {
