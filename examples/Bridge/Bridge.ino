@@ -38,7 +38,7 @@ void setup() {
 
   // The posts, 0.8 m apart, and the weights on a straight line between them,
   // 0.1 m apart. (Stepped in Q16.16: 0.1 + 0.1 * i would be float arithmetic
-  // at run time, and link the float routines, about 1 KB.)
+  // at run time, which links the float routines.)
   Point where(0.1, 0.6);
   ParticleId previous = world.addFixedParticle(where, Q16_16(0.02));
   for (uint8_t i = 1; i <= kLinks + 1; ++i) {
