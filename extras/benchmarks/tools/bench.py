@@ -95,9 +95,11 @@ def run_memory(out_dir, build_root, jobs, quick):
     path = os.path.join(out_dir, "memory.csv")
     write_csv(path, memory.COLUMNS, rows)
     log("measured %s (%d rows)" % (name_of(path), len(rows)))
-    # Issue 12's goals: the quick check (`make test`) fails on a problem.
+    # Issue 12's goals. In quick mode (`make test`) check_outputs() reports
+    # and fails on the problems; here only the notes, and in full mode the
+    # problems too.
     problems, notes = memory.check_goals(rows)
-    for line in notes + problems:
+    for line in notes + ([] if quick else problems):
         log("size goal: " + line)
     return rows
 

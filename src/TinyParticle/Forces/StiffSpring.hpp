@@ -102,7 +102,8 @@ TINYPARTICLE_NOINLINE inline void stiffSpringGains(float w2, float c, float h,
     scale *= 0.5f;
     ++squarings;
   }
-  // r = exp(X) - I - X = X^2/2! + X^3/3! + ..., then X doubled back to h J.
+  // r = exp(X) - I - X = X^2/2! + X^3/3! + ..., from the term X itself
+  // (x and term start equal), then X doubled back to h J.
   StiffSpringSeries s = {{0.0f, scale, -w2 * scale, -c * scale},
                          {0.0f, scale, -w2 * scale, -c * scale},
                          {0.0f, 0.0f, 0.0f, 0.0f}};
